@@ -1,0 +1,281 @@
+package pod.mavlink
+
+import io.dronefleet.mavlink.common.CommandLong
+import io.dronefleet.mavlink.common.MavCmd
+import io.dronefleet.mavlink.minimal.Heartbeat
+import io.dronefleet.mavlink.minimal.MavAutopilot
+import io.dronefleet.mavlink.minimal.MavState
+import io.dronefleet.mavlink.minimal.MavType
+import io.dronefleet.mavlink.util.EnumValue
+import kotlinx.coroutines.CoroutineName
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.SupervisorJob
+import kotlinx.coroutines.cancel
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.flow.MutableSharedFlow
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.SharedFlow
+import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.asSharedFlow
+import kotlinx.coroutines.flow.asStateFlow
+import kotlinx.coroutines.isActive
+import kotlinx.coroutines.job
+import kotlinx.coroutines.launch
+import pod.core.vehicle.ConnectionState
+import pod.core.vehicle.VehicleIdentity
+import pod.mavlink.codec.FrameDecoder
+import pod.mavlink.codec.FrameEncoder
+import pod.mavlink.codec.MavFrame
+import pod.mavlink.codec.MessageCodec
+import pod.mavlink.link.LinkException
+import pod.mavlink.link.LinkPeer
+import pod.mavlink.link.MavlinkLink
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
+
+/**
+ * One ground station on one link: it parses and routes every frame, sends our HEARTBEAT, finds
+ * vehicles by theirs and marks them lost when they fall silent.
+ *
+ * All its coroutines are children of the scope it was opened in; [close] (or cancelling that scope)
+ * stops them and closes the link.
+ *
+ * ```
+ * val gcs = GroundStation.open("udpin://0.0.0.0:14550", scope)
+ * val first = gcs.vehicles.first { it.isNotEmpty() }.values.first()
+ * first.telemetry.position.filterNotNull().first()
+ * ```
+ */
+public class GroundStation private constructor(
+    /** The link this station talks over. */
+    public val link: MavlinkLink,
+    /** Identity and timing. */
+    public val config: GroundStationConfig,
+    parent: CoroutineScope,
+    private val codec: MessageCodec,
+) {
+    private val scope = CoroutineScope(
+        parent.coroutineContext + SupervisorJob(parent.coroutineContext.job) +
+            Dispatchers.Default + CoroutineName("pod-gcs(${link.address})"),
+    )
+    private val encoder = FrameEncoder(codec)
+    private val sequences = SequenceNumbers()
+    private val decoders = HashMap<LinkPeer, FrameDecoder>()
+    private val _vehicles = MutableStateFlow<Map<Int, MavlinkVehicle>>(emptyMap())
+    private val _events = MutableSharedFlow<FleetEvent>(extraBufferCapacity = 256)
+    private val _stats = MutableStateFlow(LinkStats())
+    private val _linkError = MutableStateFlow<LinkException?>(null)
+    private var unrouted = 0L
+    private var handlerErrors = 0L
+
+    /** Vehicles heard so far by system id, lost ones included (see [MavlinkVehicle.connection]). */
+    public val vehicles: StateFlow<Map<Int, MavlinkVehicle>> = _vehicles.asStateFlow()
+
+    /** Found, lost and regained vehicles, as they happen. */
+    public val events: SharedFlow<FleetEvent> = _events.asSharedFlow()
+
+    /** What the receive path has counted, refreshed about four times a second. */
+    public val stats: StateFlow<LinkStats> = _stats.asStateFlow()
+
+    /** Set when the link broke (a TCP server hung up); the station then hears nothing more. */
+    public val linkError: StateFlow<LinkException?> = _linkError.asStateFlow()
+
+    private fun start() {
+        scope.launch(CoroutineName("receive")) {
+            try {
+                link.receive(::onBytes)
+            } catch (e: LinkException) {
+                _linkError.value = e
+            }
+        }
+        scope.launch(CoroutineName("heartbeat")) {
+            while (isActive) {
+                link.sendToAll(encode(gcsHeartbeat()))
+                delay(config.heartbeatInterval)
+            }
+        }
+        scope.launch(CoroutineName("connection-tracking")) {
+            val tick = minOf(config.lostAfter / 4, 250.milliseconds)
+            while (isActive) {
+                delay(tick)
+                checkSilence()
+                publishStats()
+            }
+        }
+    }
+
+    /** Sends [message] to [vehicle] (to the address it was heard from, when listening). */
+    public suspend fun sendTo(vehicle: MavlinkVehicle, message: Any) {
+        val bytes = encode(message)
+        val peer = vehicle.peer
+        if (peer != null) link.send(bytes, peer) else link.sendToAll(bytes)
+    }
+
+    /** Sends [message] to every peer of the link. */
+    public suspend fun broadcast(message: Any) {
+        link.sendToAll(encode(message))
+    }
+
+    /** Stops every coroutine of this station and closes its link. */
+    public fun close() {
+        scope.cancel()
+        link.close()
+    }
+
+    private fun encode(message: Any): ByteArray =
+        encoder.encode(message, config.systemId, config.componentId, sequences.next(config.systemId, config.componentId), config.mavlinkVersion)
+
+    // Runs in the single receive coroutine: decoders and routing state need no locking.
+    private fun onBytes(peer: LinkPeer, bytes: ByteArray) {
+        val decoder = decoders.getOrPut(peer) { FrameDecoder(codec) }
+        decoder.feed(bytes) { frame ->
+            try {
+                route(peer, frame)
+            } catch (e: Exception) {
+                // A frame that passed its CRC but breaks a handler (a vehicle sending nonsense) must
+                // not stop the receive loop; it is counted instead.
+                handlerErrors++
+            }
+        }
+    }
+
+    private fun route(peer: LinkPeer, frame: MavFrame) {
+        if (frame.systemId == config.systemId && frame.componentId == config.componentId) return
+        val message = codec.decode(frame)
+        var vehicle = _vehicles.value[frame.systemId]
+        if (message is Heartbeat) {
+            val type = message.type().value()
+            val autopilot = message.autopilot().value()
+            if (vehicle == null && MavlinkEnums.isVehicle(type, autopilot)) {
+                vehicle = MavlinkVehicle(
+                    VehicleIdentity(frame.systemId, frame.componentId, MavlinkEnums.vehicleType(type), MavlinkEnums.autopilot(autopilot)),
+                    this,
+                )
+                vehicle.peer = peer
+                _vehicles.value = _vehicles.value + (frame.systemId to vehicle)
+                vehicle.onFrame(frame, message)
+                _events.tryEmit(FleetEvent.Found(vehicle))
+                requestStreams(vehicle)
+                return
+            }
+            if (vehicle != null && frame.componentId == vehicle.identity.value.componentId &&
+                vehicle._connection.compareAndSet(ConnectionState.LOST, ConnectionState.CONNECTED)
+            ) {
+                vehicle.peer = peer
+                vehicle.onFrame(frame, message)
+                _events.tryEmit(FleetEvent.Regained(vehicle))
+                requestStreams(vehicle)
+                return
+            }
+        }
+        if (vehicle == null) {
+            unrouted++
+            return
+        }
+        vehicle.peer = peer
+        vehicle.onFrame(frame, message)
+    }
+
+    private fun checkSilence() {
+        for (vehicle in _vehicles.value.values) {
+            val silence = vehicle.lastHeartbeat.elapsedNow()
+            if (silence > config.lostAfter &&
+                vehicle._connection.compareAndSet(ConnectionState.CONNECTED, ConnectionState.LOST)
+            ) {
+                _events.tryEmit(FleetEvent.Lost(vehicle, silence))
+            }
+        }
+    }
+
+    private fun publishStats() {
+        var frames = 0L
+        var badCrc = 0L
+        var skipped = 0L
+        var unknown = 0L
+        // Plain reads of counters the receive coroutine writes: a slightly stale total is fine here.
+        for (decoder in decoders.values.toList()) {
+            frames += decoder.stats.frames
+            badCrc += decoder.stats.badCrc
+            skipped += decoder.stats.skippedBytes
+            unknown += decoder.stats.unknownMessages
+        }
+        _stats.value = LinkStats(frames, badCrc, skipped, unknown, unrouted, handlerErrors)
+    }
+
+    /**
+     * Asks [vehicle] for the configured telemetry rates, and asks again (three tries, 2 s apart)
+     * while no position has arrived, since these commands travel unacknowledged here.
+     */
+    private fun requestStreams(vehicle: MavlinkVehicle) {
+        if (config.streamRates.isEmpty()) return
+        scope.launch(CoroutineName("stream-rates-${vehicle.systemId}")) {
+            repeat(3) {
+                val id = vehicle.identity.value
+                for ((messageId, hz) in config.streamRates) {
+                    vehicle.send(
+                        CommandLong.builder()
+                            .targetSystem(id.systemId)
+                            .targetComponent(id.componentId)
+                            .command(MavCmd.MAV_CMD_SET_MESSAGE_INTERVAL)
+                            .param1(messageId.toFloat())
+                            .param2((1_000_000.0 / hz).toFloat())
+                            .build(),
+                    )
+                }
+                delay(2.seconds)
+                if (vehicle.telemetry.position.value != null ||
+                    vehicle.connection.value == ConnectionState.LOST
+                ) return@launch
+            }
+        }
+    }
+
+    private fun gcsHeartbeat(): Heartbeat = Heartbeat.builder()
+        .type(MavType.MAV_TYPE_GCS)
+        .autopilot(MavAutopilot.MAV_AUTOPILOT_INVALID)
+        .baseMode(EnumValue.create(0))
+        .customMode(0)
+        .systemStatus(MavState.MAV_STATE_ACTIVE)
+        .mavlinkVersion(3)
+        .build()
+
+    public companion object {
+        /**
+         * Opens [connection] (`udpin://0.0.0.0:14550`, `udpout:127.0.0.1:14550`, `tcp://…`) and
+         * starts the station in [scope]. Throws the link's typed errors
+         * ([pod.mavlink.link.InvalidConnectionString], [pod.mavlink.link.PortInUse],
+         * [pod.mavlink.link.HostUnreachable]).
+         */
+        public suspend fun open(
+            connection: String,
+            scope: CoroutineScope,
+            config: GroundStationConfig = GroundStationConfig(),
+            codec: MessageCodec = MessageCodec.Default,
+        ): GroundStation = open(MavlinkLink.open(connection), scope, config, codec)
+
+        /** Starts a station on an already open [link] in [scope]. */
+        public fun open(
+            link: MavlinkLink,
+            scope: CoroutineScope,
+            config: GroundStationConfig = GroundStationConfig(),
+            codec: MessageCodec = MessageCodec.Default,
+        ): GroundStation = GroundStation(link, config, scope, codec).also { it.start() }
+    }
+}
+
+/** Receive-path counters of a [GroundStation]. */
+public data class LinkStats(
+    /** Valid frames parsed. */
+    public val frames: Long = 0,
+    /** Frames dropped for a bad CRC. */
+    public val badCrc: Long = 0,
+    /** Garbage bytes skipped. */
+    public val skippedBytes: Long = 0,
+    /** Frames of message ids Pod's dialect does not know (routed undecoded). */
+    public val unknownMessages: Long = 0,
+    /** Frames from systems that never sent a vehicle HEARTBEAT (not routed). */
+    public val unrouted: Long = 0,
+    /** Frames whose handling failed (nonsense field values); counted and skipped. */
+    public val handlerErrors: Long = 0,
+)

@@ -1,0 +1,89 @@
+package pod.mavlink
+
+import io.dronefleet.mavlink.minimal.Heartbeat
+import kotlinx.coroutines.channels.BufferOverflow
+import kotlinx.coroutines.flow.MutableSharedFlow
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.SharedFlow
+import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.asSharedFlow
+import kotlinx.coroutines.flow.asStateFlow
+import pod.core.vehicle.ConnectionState
+import pod.core.vehicle.LinkQuality
+import pod.core.vehicle.VehicleIdentity
+import pod.mavlink.codec.MavFrame
+import pod.mavlink.link.LinkPeer
+import pod.mavlink.telemetry.VehicleTelemetry
+import kotlin.time.TimeMark
+import kotlin.time.TimeSource
+
+/** A message from a vehicle: the frame as received and its decoded payload (null for unknown ids). */
+public class InboundMessage(
+    /** The frame as it arrived. */
+    public val frame: MavFrame,
+    /** The io.dronefleet message object, or null when Pod's dialect does not know the id. */
+    public val message: Any?,
+)
+
+/**
+ * A vehicle heard on a [GroundStation]'s link, keyed by its MAVLink system id.
+ *
+ * Its [telemetry] is live state; its [messages] carry everything it sends, for the protocol
+ * services (commands, missions, parameters) that later talk to it.
+ */
+public class MavlinkVehicle internal constructor(
+    initial: VehicleIdentity,
+    private val station: GroundStation,
+) {
+    private val _identity = MutableStateFlow(initial)
+    internal val _connection = MutableStateFlow(ConnectionState.CONNECTED)
+    private val _messages = MutableSharedFlow<InboundMessage>(
+        extraBufferCapacity = 1024,
+        onBufferOverflow = BufferOverflow.DROP_OLDEST,
+    )
+    private val gaps = SequenceGaps()
+
+    @Volatile internal var lastHeartbeat: TimeMark = TimeSource.Monotonic.markNow()
+    @Volatile internal var peer: LinkPeer? = null
+
+    /** MAVLink system id, 1..255. */
+    public val systemId: Int get() = _identity.value.systemId
+
+    /** Type, autopilot and addresses, as its latest HEARTBEAT said. */
+    public val identity: StateFlow<VehicleIdentity> = _identity.asStateFlow()
+
+    /** Whether heartbeats still arrive. */
+    public val connection: StateFlow<ConnectionState> = _connection.asStateFlow()
+
+    /** Live telemetry. */
+    public val telemetry: VehicleTelemetry = VehicleTelemetry()
+
+    /** Every message the vehicle sends (a slow collector loses the oldest beyond 1024 buffered). */
+    public val messages: SharedFlow<InboundMessage> = _messages.asSharedFlow()
+
+    /** Sends [message] (an io.dronefleet message object) to this vehicle. */
+    public suspend fun send(message: Any) {
+        station.sendTo(this, message)
+    }
+
+    /** Called from the station's receive coroutine for every frame of this system. */
+    internal fun onFrame(frame: MavFrame, message: Any?) {
+        gaps.record(frame.componentId, frame.sequence)
+        telemetry.onLinkQuality(LinkQuality(gaps.received, gaps.lost))
+        if (message is Heartbeat && frame.componentId == _identity.value.componentId) {
+            lastHeartbeat = TimeSource.Monotonic.markNow()
+            val id = _identity.value
+            val updated = id.copy(
+                type = MavlinkEnums.vehicleType(message.type().value()),
+                autopilot = MavlinkEnums.autopilot(message.autopilot().value()),
+            )
+            if (updated != id) _identity.value = updated
+            telemetry.onHeartbeat(updated, message)
+        } else if (message != null && frame.componentId == _identity.value.componentId) {
+            telemetry.onMessage(message)
+        }
+        _messages.tryEmit(InboundMessage(frame, message))
+    }
+
+    override fun toString(): String = "vehicle ${_identity.value.systemId}"
+}

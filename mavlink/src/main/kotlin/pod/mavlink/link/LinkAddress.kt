@@ -1,0 +1,58 @@
+package pod.mavlink.link
+
+/**
+ * Where a MAVLink link goes, parsed from a connection string in either the MAVSDK form
+ * (`udpin://0.0.0.0:14550`) or the pymavlink form (`udpin:0.0.0.0:14550`).
+ */
+public sealed class LinkAddress {
+    /** Host name or address. */
+    public abstract val host: String
+
+    /** Port number, 0..65535 (0 binds an ephemeral port for [UdpIn]). */
+    public abstract val port: Int
+
+    /** Listen on a local UDP port; vehicles' addresses are learnt from their datagrams. */
+    public data class UdpIn(override val host: String, override val port: Int) : LinkAddress() {
+        override fun toString(): String = "udpin://$host:$port"
+    }
+
+    /** Send to a remote UDP port (and receive its replies on an ephemeral local port). */
+    public data class UdpOut(override val host: String, override val port: Int) : LinkAddress() {
+        override fun toString(): String = "udpout://$host:$port"
+    }
+
+    /** Connect to a TCP server (SITL's serial-over-TCP, a MAVLink router). */
+    public data class Tcp(override val host: String, override val port: Int) : LinkAddress() {
+        override fun toString(): String = "tcp://$host:$port"
+    }
+
+    public companion object {
+        private val FORM = Regex("""^(udpin|udpout|udp|tcp)(?::/{2}|:)(\[[^\]]+]|[^:/\[\]]*):(\d{1,5})$""")
+
+        /**
+         * Parses [text]; throws [InvalidConnectionString] naming what is wrong. `udp://` is read as
+         * `udpin` (MAVSDK's meaning).
+         */
+        public fun parse(text: String): LinkAddress {
+            val match = FORM.matchEntire(text.trim()) ?: throw InvalidConnectionString(
+                text,
+                "expected udpin://HOST:PORT, udpout://HOST:PORT or tcp://HOST:PORT (or udpin:HOST:PORT, …)",
+            )
+            val (scheme, rawHost, rawPort) = match.destructured
+            val port = rawPort.toInt()
+            if (port > 65535) throw InvalidConnectionString(text, "port must be 0..65535, was $port")
+            val host = rawHost.removePrefix("[").removeSuffix("]").ifEmpty { "0.0.0.0" }
+            return when (scheme) {
+                "udpin", "udp" -> UdpIn(host, port)
+                "udpout" -> {
+                    if (port == 0) throw InvalidConnectionString(text, "udpout needs a destination port, was 0")
+                    UdpOut(host, port)
+                }
+                else -> {
+                    if (port == 0) throw InvalidConnectionString(text, "tcp needs a destination port, was 0")
+                    Tcp(host, port)
+                }
+            }
+        }
+    }
+}

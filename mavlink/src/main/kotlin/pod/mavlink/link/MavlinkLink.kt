@@ -1,0 +1,61 @@
+package pod.mavlink.link
+
+import io.ktor.network.sockets.SocketAddress
+
+/**
+ * A byte pipe to MAVLink peers: a UDP socket (listening or sending to one address) or a TCP
+ * connection. It knows nothing of frames; [pod.mavlink.GroundStation] parses what it receives.
+ *
+ * @see open
+ */
+public interface MavlinkLink {
+    /** What this link was opened on. */
+    public val address: LinkAddress
+
+    /** The local port the link is bound to. */
+    public val localPort: Int
+
+    /** Peers that [sendToAll] reaches: every peer heard from when listening, else the remote. */
+    public val peers: Collection<LinkPeer>
+
+    /**
+     * Receives until the link is closed or the caller is cancelled, calling [onBytes] from this
+     * one coroutine for every datagram (UDP) or chunk (TCP). Throws [LinkException] if the link
+     * breaks (a TCP server hanging up); returns normally when [close] was called.
+     */
+    public suspend fun receive(onBytes: (peer: LinkPeer, bytes: ByteArray) -> Unit)
+
+    /** Sends [bytes] to [peer]. */
+    public suspend fun send(bytes: ByteArray, peer: LinkPeer)
+
+    /** Sends [bytes] to every peer in [peers]. */
+    public suspend fun sendToAll(bytes: ByteArray) {
+        for (peer in peers) send(bytes, peer)
+    }
+
+    /** Closes the socket; [receive] returns. */
+    public fun close()
+
+    public companion object {
+        /**
+         * Opens a link on [address]: binds or connects now, so a port in use or an unknown host
+         * fails here with [PortInUse] or [HostUnreachable].
+         */
+        public suspend fun open(address: LinkAddress): MavlinkLink = when (address) {
+            is LinkAddress.UdpIn, is LinkAddress.UdpOut -> UdpLink.open(address)
+            is LinkAddress.Tcp -> TcpLink.open(address)
+        }
+
+        /** Parses [connection] (see [LinkAddress.parse]) and opens it. */
+        public suspend fun open(connection: String): MavlinkLink = open(LinkAddress.parse(connection))
+    }
+}
+
+/** One remote end of a link: where datagrams came from and where replies go. */
+public class LinkPeer internal constructor(internal val socketAddress: SocketAddress) {
+    override fun equals(other: Any?): Boolean = other is LinkPeer && other.socketAddress == socketAddress
+
+    override fun hashCode(): Int = socketAddress.hashCode()
+
+    override fun toString(): String = socketAddress.toString().removePrefix("/")
+}

@@ -1,0 +1,98 @@
+package pod.mavlink.link
+
+import io.ktor.network.selector.SelectorManager
+import io.ktor.network.sockets.BoundDatagramSocket
+import io.ktor.network.sockets.Datagram
+import io.ktor.network.sockets.InetSocketAddress
+import io.ktor.network.sockets.aSocket
+import io.ktor.utils.io.core.buildPacket
+import io.ktor.utils.io.core.writeFully
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.channels.ClosedReceiveChannelException
+import kotlinx.io.readByteArray
+import java.net.BindException
+import java.net.SocketException
+import java.util.concurrent.ConcurrentHashMap
+
+/**
+ * UDP over a Ktor datagram socket. Listening ([LinkAddress.UdpIn]) it learns a peer from every
+ * datagram, so one port serves many vehicles; sending ([LinkAddress.UdpOut]) it binds an
+ * ephemeral port and talks to one remote, as SITL's `--out` and pymavlink's `udpout` do.
+ */
+internal class UdpLink private constructor(
+    override val address: LinkAddress,
+    private val selector: SelectorManager,
+    private val socket: BoundDatagramSocket,
+    private val remote: LinkPeer?,
+) : MavlinkLink {
+    private val heard = ConcurrentHashMap<LinkPeer, Unit>()
+
+    override val localPort: Int = (socket.localAddress as InetSocketAddress).port
+
+    override val peers: Collection<LinkPeer>
+        get() = if (remote != null) listOf(remote) else heard.keys.toList()
+
+    override suspend fun receive(onBytes: (peer: LinkPeer, bytes: ByteArray) -> Unit) {
+        // Interning peers keeps one object per address, so callers can key state by peer cheaply.
+        val interned = HashMap<io.ktor.network.sockets.SocketAddress, LinkPeer>()
+        try {
+            while (true) {
+                val datagram = socket.incoming.receive()
+                val peer = interned.getOrPut(datagram.address) {
+                    LinkPeer(datagram.address).also { if (remote == null) heard[it] = Unit }
+                }
+                onBytes(peer, datagram.packet.readByteArray())
+            }
+        } catch (_: ClosedReceiveChannelException) {
+            // close() was called
+        }
+    }
+
+    override suspend fun send(bytes: ByteArray, peer: LinkPeer) {
+        if (socket.outgoing.isClosedForSend) return
+        try {
+            socket.send(Datagram(buildPacket { writeFully(bytes) }, peer.socketAddress))
+        } catch (e: SocketException) {
+            // UDP gives no delivery guarantee anyway; a send to a vanished peer is a lost datagram.
+        }
+    }
+
+    override fun close() {
+        socket.close()
+        selector.close()
+    }
+
+    companion object {
+        /** Big enough for a burst from dozens of vehicles; Linux caps it at net.core.rmem_max. */
+        const val RECEIVE_BUFFER_BYTES = 4 shl 20
+
+        suspend fun open(address: LinkAddress): UdpLink {
+            val selector = SelectorManager(Dispatchers.IO)
+            try {
+                val remote = if (address is LinkAddress.UdpOut) {
+                    val resolved = java.net.InetSocketAddress(address.host, address.port)
+                    if (resolved.isUnresolved) throw HostUnreachable(address, "unknown host '${address.host}'")
+                    LinkPeer(InetSocketAddress(address.host, address.port))
+                } else {
+                    null
+                }
+                val local = if (address is LinkAddress.UdpIn) InetSocketAddress(address.host, address.port) else null
+                val socket = try {
+                    aSocket(selector).udp().bind(local) {
+                        receiveBufferSize = RECEIVE_BUFFER_BYTES
+                        sendBufferSize = 1 shl 20
+                    }
+                } catch (e: BindException) {
+                    if (e.message.orEmpty().contains("in use", ignoreCase = true)) throw PortInUse(address, e)
+                    throw LinkException("cannot listen on ${address.host}:${address.port}: ${e.message}", e)
+                } catch (e: java.nio.channels.UnresolvedAddressException) {
+                    throw HostUnreachable(address, "unknown host '${address.host}'", e)
+                }
+                return UdpLink(address, selector, socket, remote)
+            } catch (e: Throwable) {
+                selector.close()
+                throw e
+            }
+        }
+    }
+}

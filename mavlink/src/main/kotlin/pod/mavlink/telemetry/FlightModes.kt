@@ -1,0 +1,79 @@
+package pod.mavlink.telemetry
+
+import pod.core.vehicle.Autopilot
+import pod.core.vehicle.FlightMode
+import pod.core.vehicle.VehicleType
+
+/**
+ * Names of autopilot flight modes, from the custom_mode number a HEARTBEAT carries and back.
+ *
+ * ArduPilot numbers modes per vehicle family (Copter and Plane tables here); PX4 packs a main mode
+ * into bits 16..23 and an AUTO sub-mode into bits 24..31.
+ */
+public object FlightModes {
+    private val arduCopter = mapOf(
+        0 to "STABILIZE", 1 to "ACRO", 2 to "ALT_HOLD", 3 to "AUTO", 4 to "GUIDED", 5 to "LOITER",
+        6 to "RTL", 7 to "CIRCLE", 9 to "LAND", 11 to "DRIFT", 13 to "SPORT", 14 to "FLIP",
+        15 to "AUTOTUNE", 16 to "POSHOLD", 17 to "BRAKE", 18 to "THROW", 19 to "AVOID_ADSB",
+        20 to "GUIDED_NOGPS", 21 to "SMART_RTL", 22 to "FLOWHOLD", 23 to "FOLLOW", 24 to "ZIGZAG",
+        25 to "SYSTEMID", 26 to "AUTOROTATE", 27 to "AUTO_RTL",
+    )
+    private val arduPlane = mapOf(
+        0 to "MANUAL", 1 to "CIRCLE", 2 to "STABILIZE", 3 to "TRAINING", 4 to "ACRO", 5 to "FBWA",
+        6 to "FBWB", 7 to "CRUISE", 8 to "AUTOTUNE", 10 to "AUTO", 11 to "RTL", 12 to "LOITER",
+        13 to "TAKEOFF", 14 to "AVOID_ADSB", 15 to "GUIDED", 17 to "QSTABILIZE", 18 to "QHOVER",
+        19 to "QLOITER", 20 to "QLAND", 21 to "QRTL", 22 to "QAUTOTUNE", 23 to "QACRO", 24 to "THERMAL",
+        25 to "LOITER_ALT_QLAND",
+    )
+    private val px4Main = mapOf(
+        1 to "MANUAL", 2 to "ALTCTL", 3 to "POSCTL", 4 to "AUTO", 5 to "ACRO", 6 to "OFFBOARD",
+        7 to "STABILIZED", 8 to "RATTITUDE",
+    )
+    private val px4AutoSub = mapOf(
+        1 to "READY", 2 to "TAKEOFF", 3 to "LOITER", 4 to "MISSION", 5 to "RTL", 6 to "LAND",
+        8 to "FOLLOW_TARGET", 9 to "PRECLAND", 10 to "VTOL_TAKEOFF",
+    )
+
+    /** The mode [customMode] means on [autopilot] flying a [type] airframe. */
+    public fun decode(autopilot: Autopilot, type: VehicleType, customMode: Long): FlightMode =
+        FlightMode(nameOf(autopilot, type, customMode) ?: "MODE($customMode)", customMode)
+
+    /**
+     * The custom_mode number of the mode called [name] on [autopilot] flying [type], or null when
+     * that autopilot has no such mode.
+     */
+    public fun customMode(autopilot: Autopilot, type: VehicleType, name: String): Long? = when (autopilot) {
+        Autopilot.PX4 -> {
+            val parts = name.uppercase().split('.')
+            val main = px4Main.entries.firstOrNull { it.value == parts[0] }?.key
+            val sub = parts.getOrNull(1)?.let { s -> px4AutoSub.entries.firstOrNull { it.value == s }?.key }
+            when {
+                main == null -> null
+                parts.size == 1 -> main.toLong() shl 16
+                sub == null || main != PX4_AUTO -> null
+                else -> (main.toLong() shl 16) or (sub.toLong() shl 24)
+            }
+        }
+        else -> arduTable(type).entries.firstOrNull { it.value == name.uppercase() }?.key?.toLong()
+    }
+
+    private fun nameOf(autopilot: Autopilot, type: VehicleType, customMode: Long): String? = when (autopilot) {
+        Autopilot.PX4 -> {
+            val main = ((customMode shr 16) and 0xFF).toInt()
+            val sub = ((customMode shr 24) and 0xFF).toInt()
+            val mainName = px4Main[main]
+            when {
+                mainName == null -> null
+                main == PX4_AUTO -> px4AutoSub[sub]?.let { "AUTO.$it" } ?: mainName
+                else -> mainName
+            }
+        }
+        Autopilot.ARDUPILOT -> arduTable(type)[customMode.toInt()]
+        else -> null
+    }
+
+    private fun arduTable(type: VehicleType): Map<Int, String> =
+        if (type == VehicleType.FIXED_WING || type == VehicleType.VTOL) arduPlane else arduCopter
+
+    private const val PX4_AUTO = 4
+}

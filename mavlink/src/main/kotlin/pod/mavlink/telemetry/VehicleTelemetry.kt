@@ -1,0 +1,128 @@
+package pod.mavlink.telemetry
+
+import io.dronefleet.mavlink.common.Attitude as AttitudeMessage
+import io.dronefleet.mavlink.common.ExtendedSysState
+import io.dronefleet.mavlink.common.GlobalPositionInt
+import io.dronefleet.mavlink.common.GpsRawInt
+import io.dronefleet.mavlink.common.HomePosition
+import io.dronefleet.mavlink.common.SysStatus
+import io.dronefleet.mavlink.minimal.Heartbeat
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.asStateFlow
+import pod.core.units.Location
+import pod.core.units.deg
+import pod.core.units.m
+import pod.core.units.mps
+import pod.core.vehicle.Attitude
+import pod.core.vehicle.Battery
+import pod.core.vehicle.FlightMode
+import pod.core.vehicle.GpsStatus
+import pod.core.vehicle.LandedState
+import pod.core.vehicle.LinkQuality
+import pod.core.vehicle.Position
+import pod.core.vehicle.VehicleIdentity
+
+/**
+ * Live telemetry of one vehicle, each value a [StateFlow] that holds the latest report (null until
+ * the first one arrives).
+ */
+public class VehicleTelemetry internal constructor() {
+    private val _position = MutableStateFlow<Position?>(null)
+    private val _home = MutableStateFlow<Location?>(null)
+    private val _attitude = MutableStateFlow<Attitude?>(null)
+    private val _battery = MutableStateFlow<Battery?>(null)
+    private val _mode = MutableStateFlow<FlightMode?>(null)
+    private val _armed = MutableStateFlow(false)
+    private val _landedState = MutableStateFlow(LandedState.UNDEFINED)
+    private val _gps = MutableStateFlow<GpsStatus?>(null)
+    private val _systemStatus = MutableStateFlow(0)
+    private val _linkQuality = MutableStateFlow(LinkQuality(0, 0))
+
+    /** Global position, relative altitude, heading and velocity (GLOBAL_POSITION_INT). */
+    public val position: StateFlow<Position?> = _position.asStateFlow()
+
+    /** Home location (HOME_POSITION). */
+    public val home: StateFlow<Location?> = _home.asStateFlow()
+
+    /** Roll, pitch and yaw (ATTITUDE). */
+    public val attitude: StateFlow<Attitude?> = _attitude.asStateFlow()
+
+    /** Remaining charge and voltage (SYS_STATUS). */
+    public val battery: StateFlow<Battery?> = _battery.asStateFlow()
+
+    /** Flight mode, named for the vehicle's autopilot and airframe (HEARTBEAT). */
+    public val mode: StateFlow<FlightMode?> = _mode.asStateFlow()
+
+    /** Whether the motors are armed (HEARTBEAT base_mode). */
+    public val armed: StateFlow<Boolean> = _armed.asStateFlow()
+
+    /** On the ground, in the air, taking off or landing (EXTENDED_SYS_STATE). */
+    public val landedState: StateFlow<LandedState> = _landedState.asStateFlow()
+
+    /** GPS fix and satellites (GPS_RAW_INT). */
+    public val gps: StateFlow<GpsStatus?> = _gps.asStateFlow()
+
+    /** MAV_STATE number from the HEARTBEAT (0 uninit, 1 boot, 3 standby, 4 active, …). */
+    public val systemStatus: StateFlow<Int> = _systemStatus.asStateFlow()
+
+    /** Frames received and lost, from the vehicle's sequence numbers. */
+    public val linkQuality: StateFlow<LinkQuality> = _linkQuality.asStateFlow()
+
+    internal fun onHeartbeat(identity: VehicleIdentity, heartbeat: Heartbeat) {
+        _mode.value = FlightModes.decode(identity.autopilot, identity.type, heartbeat.customMode())
+        _armed.value = heartbeat.baseMode().value() and MAV_MODE_FLAG_SAFETY_ARMED != 0
+        _systemStatus.value = heartbeat.systemStatus().value()
+    }
+
+    /** Applies one decoded message; returns false when it carried nothing usable (out-of-range values). */
+    internal fun onMessage(message: Any): Boolean {
+        when (message) {
+            is GlobalPositionInt -> {
+                val lat = message.lat() / 1e7
+                val lon = message.lon() / 1e7
+                if (lat !in -90.0..90.0 || lon !in -180.0..180.0) return false
+                _position.value = Position(
+                    location = Location(lat, lon, (message.alt() / 1000.0).m),
+                    relativeAltitude = (message.relativeAlt() / 1000.0).m,
+                    heading = if (message.hdg() == UNKNOWN_U16) null else (message.hdg() / 100.0).deg,
+                    velocityNorth = (message.vx() / 100.0).mps,
+                    velocityEast = (message.vy() / 100.0).mps,
+                    velocityDown = (message.vz() / 100.0).mps,
+                )
+            }
+            is SysStatus -> _battery.value = Battery(
+                remaining = message.batteryRemaining().takeIf { it in 0..100 }?.let { it / 100.0 },
+                voltage = message.voltageBattery().takeIf { it != UNKNOWN_U16 }?.let { it / 1000.0 },
+            )
+            is HomePosition -> {
+                val lat = message.latitude() / 1e7
+                val lon = message.longitude() / 1e7
+                if (lat !in -90.0..90.0 || lon !in -180.0..180.0) return false
+                _home.value = Location(lat, lon, (message.altitude() / 1000.0).m)
+            }
+            is AttitudeMessage -> _attitude.value = Attitude(
+                roll = Math.toDegrees(message.roll().toDouble()).deg,
+                pitch = Math.toDegrees(message.pitch().toDouble()).deg,
+                yaw = Math.toDegrees(message.yaw().toDouble()).deg,
+            )
+            is ExtendedSysState -> _landedState.value =
+                LandedState.entries.getOrElse(message.landedState().value()) { LandedState.UNDEFINED }
+            is GpsRawInt -> _gps.value = GpsStatus(
+                fixType = message.fixType().value(),
+                satellites = message.satellitesVisible().takeIf { it != UNKNOWN_U8 },
+            )
+        }
+        return true
+    }
+
+    internal fun onLinkQuality(quality: LinkQuality) {
+        _linkQuality.value = quality
+    }
+
+    private companion object {
+        const val MAV_MODE_FLAG_SAFETY_ARMED = 128
+        const val UNKNOWN_U16 = 65535
+        const val UNKNOWN_U8 = 255
+    }
+}

@@ -1,0 +1,58 @@
+package pod.sim
+
+import kotlinx.coroutines.CoroutineScope
+import pod.core.units.m
+
+/**
+ * Several [SimVehicle]s with distinct system ids, parked in a row east of [base]'s home so their
+ * positions differ.
+ */
+public class SimFleet private constructor(
+    /** The vehicles, in system-id order. */
+    public val vehicles: List<SimVehicle>,
+) {
+    /** The vehicle with [systemId]; throws NoSuchElementException when the fleet has none. */
+    public operator fun get(systemId: Int): SimVehicle =
+        vehicles.firstOrNull { it.config.systemId == systemId }
+            ?: throw NoSuchElementException("no simulated vehicle with system id $systemId in ${vehicles.map { it.config.systemId }}")
+
+    /** Stops every vehicle. */
+    public fun stop() {
+        vehicles.forEach { it.stop() }
+    }
+
+    public companion object {
+        /**
+         * Starts [count] vehicles in [scope]: system ids from [firstSystemId], each a copy of [base]
+         * with its home [spacing] metres east of the previous one.
+         */
+        public suspend fun start(
+            count: Int,
+            scope: CoroutineScope,
+            base: SimVehicleConfig = SimVehicleConfig(systemId = 1),
+            firstSystemId: Int = base.systemId,
+            spacing: Double = 10.0,
+        ): SimFleet {
+            require(count in 1..254) { "count must be in 1..254, was $count" }
+            require(firstSystemId in 1..254 && firstSystemId + count - 1 <= 254) {
+                "system ids $firstSystemId..${firstSystemId + count - 1} must lie within 1..254"
+            }
+            val vehicles = (0 until count).map { i ->
+                SimVehicle(
+                    base.copy(
+                        systemId = firstSystemId + i,
+                        home = base.home.offset(north = 0.m, east = (spacing * i).m),
+                    ),
+                )
+            }
+            val fleet = SimFleet(vehicles)
+            try {
+                vehicles.forEach { it.start(scope) }
+            } catch (e: Throwable) {
+                fleet.stop()
+                throw e
+            }
+            return fleet
+        }
+    }
+}

@@ -1,0 +1,117 @@
+package pod.sim
+
+import io.dronefleet.mavlink.common.Attitude
+import io.dronefleet.mavlink.common.ExtendedSysState
+import io.dronefleet.mavlink.common.GlobalPositionInt
+import io.dronefleet.mavlink.common.GpsFixType
+import io.dronefleet.mavlink.common.GpsRawInt
+import io.dronefleet.mavlink.common.HomePosition
+import io.dronefleet.mavlink.common.MavLandedState
+import io.dronefleet.mavlink.common.MavVtolState
+import io.dronefleet.mavlink.common.SysStatus
+import io.dronefleet.mavlink.minimal.Heartbeat
+import io.dronefleet.mavlink.minimal.MavState
+import io.dronefleet.mavlink.util.EnumValue
+import pod.core.vehicle.LandedState
+import pod.mavlink.MavlinkEnums
+import java.math.BigInteger
+import kotlin.math.roundToInt
+import kotlin.math.roundToLong
+import kotlin.time.TimeMark
+
+/** Builds the messages a simulated vehicle streams from its [SimState]. */
+internal class SimMessages(private val config: SimVehicleConfig, private val bootedAt: TimeMark) {
+
+    fun canBuild(messageId: Int): Boolean = messageId in SUPPORTED
+
+    fun build(messageId: Int, s: SimState): Any? = when (messageId) {
+        MessageIds.SYS_STATUS -> sysStatus(s)
+        MessageIds.GPS_RAW_INT -> gpsRaw(s)
+        MessageIds.ATTITUDE -> attitude(s)
+        MessageIds.GLOBAL_POSITION_INT -> globalPosition(s)
+        MessageIds.HOME_POSITION -> home(s)
+        MessageIds.EXTENDED_SYS_STATE -> extendedSysState(s)
+        else -> null
+    }
+
+    fun heartbeat(s: SimState): Heartbeat = Heartbeat.builder()
+        .type(EnumValue.create(MavlinkEnums.mavType(config.type)))
+        .autopilot(EnumValue.create(MavlinkEnums.mavAutopilot(config.autopilot)))
+        .baseMode(EnumValue.create(MODE_FLAG_CUSTOM_MODE_ENABLED or (if (s.armed) MODE_FLAG_SAFETY_ARMED else 0)))
+        .customMode(s.customMode)
+        .systemStatus(if (s.armed) MavState.MAV_STATE_ACTIVE else MavState.MAV_STATE_STANDBY)
+        .mavlinkVersion(3)
+        .build()
+
+    private fun timeBootMs(): Long = bootedAt.elapsedNow().inWholeMilliseconds and 0xFFFF_FFFFL
+
+    private fun sysStatus(s: SimState): SysStatus = SysStatus.builder()
+        .voltageBattery((CELLS * (EMPTY_CELL_V + (FULL_CELL_V - EMPTY_CELL_V) * s.charge) * 1000).roundToInt())
+        .currentBattery(if (s.armed) 1500 else 0) // cA: 15 A hovering
+        .batteryRemaining((s.charge * 100).roundToInt())
+        .build()
+
+    private fun gpsRaw(s: SimState): GpsRawInt = GpsRawInt.builder()
+        .timeUsec(BigInteger.valueOf(bootedAt.elapsedNow().inWholeMicroseconds))
+        .fixType(GpsFixType.GPS_FIX_TYPE_3D_FIX)
+        .lat(e7(s.location.latitude))
+        .lon(e7(s.location.longitude))
+        .alt((s.location.altitude.meters * 1000).roundToInt())
+        .eph(80)
+        .epv(120)
+        .vel(65535)
+        .cog(65535)
+        .satellitesVisible(14)
+        .build()
+
+    private fun attitude(s: SimState): Attitude = Attitude.builder()
+        .timeBootMs(timeBootMs())
+        .yaw(Math.toRadians(if (s.headingDeg > 180) s.headingDeg - 360 else s.headingDeg).toFloat())
+        .build()
+
+    private fun globalPosition(s: SimState): GlobalPositionInt = GlobalPositionInt.builder()
+        .timeBootMs(timeBootMs())
+        .lat(e7(s.location.latitude))
+        .lon(e7(s.location.longitude))
+        .alt((s.location.altitude.meters * 1000).roundToInt())
+        .relativeAlt((s.relativeAltitude.meters * 1000).roundToInt())
+        .vx((s.velocityNed.first * 100).roundToInt())
+        .vy((s.velocityNed.second * 100).roundToInt())
+        .vz((s.velocityNed.third * 100).roundToInt())
+        .hdg((s.headingDeg * 100).roundToInt().mod(36000))
+        .build()
+
+    private fun home(s: SimState): HomePosition = HomePosition.builder()
+        .latitude(e7(s.home.latitude))
+        .longitude(e7(s.home.longitude))
+        .altitude((s.home.altitude.meters * 1000).roundToInt())
+        .q(listOf(1f, 0f, 0f, 0f))
+        .build()
+
+    private fun extendedSysState(s: SimState): ExtendedSysState = ExtendedSysState.builder()
+        .vtolState(MavVtolState.MAV_VTOL_STATE_UNDEFINED)
+        .landedState(
+            when (s.landedState) {
+                LandedState.UNDEFINED -> MavLandedState.MAV_LANDED_STATE_UNDEFINED
+                LandedState.ON_GROUND -> MavLandedState.MAV_LANDED_STATE_ON_GROUND
+                LandedState.IN_AIR -> MavLandedState.MAV_LANDED_STATE_IN_AIR
+                LandedState.TAKEOFF -> MavLandedState.MAV_LANDED_STATE_TAKEOFF
+                LandedState.LANDING -> MavLandedState.MAV_LANDED_STATE_LANDING
+            },
+        )
+        .build()
+
+    private fun e7(degrees: Double): Int = (degrees * 1e7).roundToLong().toInt()
+
+    private companion object {
+        val SUPPORTED = setOf(
+            MessageIds.SYS_STATUS, MessageIds.GPS_RAW_INT, MessageIds.ATTITUDE,
+            MessageIds.GLOBAL_POSITION_INT, MessageIds.HOME_POSITION, MessageIds.EXTENDED_SYS_STATE,
+        )
+        const val MODE_FLAG_CUSTOM_MODE_ENABLED = 1
+        const val MODE_FLAG_SAFETY_ARMED = 128
+        const val CELLS = 4
+        const val FULL_CELL_V = 4.2
+        const val EMPTY_CELL_V = 3.5
+    }
+}

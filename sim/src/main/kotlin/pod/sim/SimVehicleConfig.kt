@@ -1,0 +1,74 @@
+package pod.sim
+
+import pod.core.units.Location
+import pod.core.units.m
+import pod.core.vehicle.Autopilot
+import pod.core.vehicle.VehicleType
+
+/**
+ * How a [SimVehicle] looks on the wire and how it behaves.
+ *
+ * [timeScale] speeds up the simulated world (flight, battery) relative to the wall clock; message
+ * rates stay in wall-clock time, so a ground station sees an ordinary link.
+ */
+public data class SimVehicleConfig(
+    /** MAVLink system id, 1..254. */
+    public val systemId: Int,
+    /** MAVLink component id of the autopilot. */
+    public val componentId: Int = 1,
+    /** Airframe it announces and flies as. */
+    public val type: VehicleType = VehicleType.QUADROTOR,
+    /** Autopilot flavour: decides mode numbering and protocol quirks. */
+    public val autopilot: Autopilot = Autopilot.ARDUPILOT,
+    /** Where it boots; altitude above mean sea level. */
+    public val home: Location = DEFAULT_HOME,
+    /** Where its telemetry goes, like SITL's `--out`: `udpout://127.0.0.1:14550`. */
+    public val gcs: String = "udpout://127.0.0.1:14550",
+    /** Initial battery charge, 0..1. */
+    public val initialCharge: Double = 1.0,
+    /** Simulated seconds per wall-clock second. */
+    public val timeScale: Double = 1.0,
+    /** Message id → rate in Hz of the streams it sends before anyone asks (HEARTBEAT is always 1 Hz). */
+    public val streamRates: Map<Int, Double> = DEFAULT_STREAM_RATES,
+) {
+    init {
+        require(systemId in 1..254) { "systemId must be in 1..254, was $systemId" }
+        require(componentId in 1..255) { "componentId must be in 1..255, was $componentId" }
+        require(initialCharge in 0.0..1.0) { "initialCharge must be in 0..1, was $initialCharge" }
+        require(timeScale > 0 && timeScale <= 1000) { "timeScale must be in (0, 1000], was $timeScale" }
+        streamRates.forEach { (id, hz) -> require(hz >= 0 && hz <= 1000) { "stream rate for message $id must be in [0, 1000] Hz, was $hz" } }
+    }
+
+    public companion object {
+        /** Near the Faculty of Engineering in Porto, where Dolphin was written. */
+        public val DEFAULT_HOME: Location = Location(41.178_046, -8.595_786, 120.m)
+
+        /** SYS_STATUS, GPS_RAW_INT, EXTENDED_SYS_STATE 1 Hz; GLOBAL_POSITION_INT, ATTITUDE 2 Hz; HOME_POSITION 0.2 Hz. */
+        public val DEFAULT_STREAM_RATES: Map<Int, Double> = mapOf(
+            MessageIds.SYS_STATUS to 1.0,
+            MessageIds.GPS_RAW_INT to 1.0,
+            MessageIds.ATTITUDE to 2.0,
+            MessageIds.GLOBAL_POSITION_INT to 2.0,
+            MessageIds.HOME_POSITION to 0.2,
+            MessageIds.EXTENDED_SYS_STATE to 1.0,
+        )
+    }
+}
+
+/** The MAVLink message ids the simulator streams. */
+public object MessageIds {
+    /** HEARTBEAT. */
+    public const val HEARTBEAT: Int = 0
+    /** SYS_STATUS. */
+    public const val SYS_STATUS: Int = 1
+    /** GPS_RAW_INT. */
+    public const val GPS_RAW_INT: Int = 24
+    /** ATTITUDE. */
+    public const val ATTITUDE: Int = 30
+    /** GLOBAL_POSITION_INT. */
+    public const val GLOBAL_POSITION_INT: Int = 33
+    /** HOME_POSITION. */
+    public const val HOME_POSITION: Int = 242
+    /** EXTENDED_SYS_STATE. */
+    public const val EXTENDED_SYS_STATE: Int = 245
+}
