@@ -1,0 +1,70 @@
+package pod.cli
+
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.launch
+import pod.mavlink.GroundStation
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.seconds
+
+/**
+ * Shows a ground station's fleet until cancelled: for people a table redrawn every [period] with
+ * the latest events under it; with [json], one JSON object per event as it happens and one
+ * telemetry object per vehicle every [period].
+ */
+internal class LiveView(
+    private val out: Output,
+    private val json: Boolean,
+    private val period: Duration = 1.seconds,
+    private val redraw: Boolean = System.console() != null,
+) {
+    private val recent = ArrayDeque<String>()
+
+    suspend fun show(gcs: GroundStation): Nothing = coroutineScope {
+        launch {
+            gcs.events.collect { event ->
+                if (json) {
+                    out.line(FleetView.eventJson(event))
+                } else {
+                    val line = FleetView.eventLine(event)
+                    if (redraw) remember(line) else out.line(line)
+                }
+            }
+        }
+        while (true) {
+            delay(period)
+            render(gcs)
+        }
+        @Suppress("UNREACHABLE_CODE")
+        throw IllegalStateException()
+    }
+
+    fun render(gcs: GroundStation) {
+        val vehicles = gcs.vehicles.value.values
+        if (json) {
+            vehicles.sortedBy { it.systemId }.forEach { out.line(FleetView.telemetryJson(it)) }
+            return
+        }
+        val table = FleetView.table(vehicles)
+        if (redraw) {
+            out.line(CLEAR_SCREEN + (table + "" + recent).joinToString("\n"))
+        } else {
+            table.forEach(out::line)
+            out.line("")
+        }
+    }
+
+    fun note(text: String) {
+        if (json) return
+        if (redraw) remember(text) else out.line(text)
+    }
+
+    private fun remember(line: String) {
+        recent.addLast(line)
+        while (recent.size > 8) recent.removeFirst()
+    }
+
+    private companion object {
+        const val CLEAR_SCREEN = "\u001b[H\u001b[2J"
+    }
+}

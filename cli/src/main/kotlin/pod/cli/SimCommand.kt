@@ -1,0 +1,62 @@
+package pod.cli
+
+import com.github.ajalt.clikt.core.CliktCommand
+import com.github.ajalt.clikt.core.Context
+import com.github.ajalt.clikt.core.UsageError
+import com.github.ajalt.clikt.parameters.options.default
+import com.github.ajalt.clikt.parameters.options.flag
+import com.github.ajalt.clikt.parameters.options.option
+import com.github.ajalt.clikt.parameters.types.choice
+import com.github.ajalt.clikt.parameters.types.double
+import com.github.ajalt.clikt.parameters.types.int
+import com.github.ajalt.clikt.parameters.types.restrictTo
+import kotlinx.coroutines.awaitCancellation
+import kotlinx.coroutines.runBlocking
+import pod.core.vehicle.Autopilot
+import pod.core.vehicle.VehicleType
+import pod.mavlink.link.LinkAddress
+import pod.sim.SimFleet
+import pod.sim.SimVehicleConfig
+
+/** `pod sim`: simulated vehicles sending to a ground station, until interrupted. */
+internal class SimCommand(private val out: Output) : CliktCommand(name = "sim") {
+    private val vehicles by option("--vehicles", help = "how many vehicles").int().restrictTo(1..254).default(1)
+    private val target by option("--out", help = "where telemetry goes, like SITL's --out").default("udpout:127.0.0.1:14550")
+    private val type by option("--type", help = "airframe").choice("quad" to VehicleType.QUADROTOR, "plane" to VehicleType.FIXED_WING)
+        .default(VehicleType.QUADROTOR)
+    private val autopilot by option("--autopilot", help = "autopilot flavour")
+        .choice("ardupilot" to Autopilot.ARDUPILOT, "px4" to Autopilot.PX4).default(Autopilot.ARDUPILOT)
+    private val speedup by option("--speedup", help = "simulated seconds per real second").double().restrictTo(0.01..1000.0).default(1.0)
+    private val sysid by option("--sysid", help = "system id of the first vehicle").int().restrictTo(1..254).default(1)
+    private val json by option("--json", help = "JSON lines instead of text").flag()
+
+    override fun help(context: Context): String = "Run simulated MAVLink vehicles until interrupted."
+
+    override fun run() = runBlocking {
+        val address = reportingLinkErrors { LinkAddress.parse(target) }
+        if (sysid + vehicles - 1 > 254) throw UsageError("--sysid $sysid with --vehicles $vehicles goes past system id 254")
+        val fleet = reportingLinkErrors {
+            SimFleet.start(
+                vehicles, this,
+                SimVehicleConfig(systemId = sysid, type = type, autopilot = autopilot, gcs = target, timeScale = speedup),
+            )
+        }
+        for (v in fleet.vehicles) {
+            val c = v.config
+            out.line(
+                if (json) {
+                    jsonLine("event" to "started", "sysid" to c.systemId, "type" to c.type.name, "autopilot" to c.autopilot.name,
+                        "local_port" to v.localPort, "out" to address.toString())
+                } else {
+                    "vehicle ${c.systemId}: ${c.type.name.lowercase()} on ${c.autopilot.name.lowercase()}, " +
+                        "sending from port ${v.localPort} to $address"
+                },
+            )
+        }
+        try {
+            awaitCancellation()
+        } finally {
+            fleet.stop()
+        }
+    }
+}

@@ -1,0 +1,53 @@
+package pod.cli
+
+import com.github.ajalt.clikt.core.CliktCommand
+import com.github.ajalt.clikt.core.Context
+import com.github.ajalt.clikt.parameters.options.convert
+import com.github.ajalt.clikt.parameters.options.default
+import com.github.ajalt.clikt.parameters.options.flag
+import com.github.ajalt.clikt.parameters.options.option
+import kotlinx.coroutines.runBlocking
+import kotlinx.coroutines.withTimeoutOrNull
+import pod.mavlink.GroundStation
+import pod.mavlink.GroundStationConfig
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.seconds
+
+/** `pod watch`: shows every vehicle on a link, Pod's or not, live. */
+internal class WatchCommand(private val out: Output) : CliktCommand(name = "watch") {
+    private val connect by option("--connect", help = "link to listen on or connect to (udpin:, udpout:, tcp:)")
+        .default("udpin:0.0.0.0:14550")
+    private val json by option("--json", help = "one JSON object per event or update, per line").flag()
+    private val duration by option("--duration", help = "stop after this long (10s, 2m); default: until interrupted")
+        .convert { it.toDurationOrNull() ?: fail(NOT_A_DURATION.format(it)) }
+    private val lostAfter by option("--lost-after", help = "silence after which a vehicle is marked lost")
+        .convert { it.toDurationOrNull() ?: fail(NOT_A_DURATION.format(it)) }.default(3.seconds)
+
+    override fun help(context: Context): String = "Show the vehicles on a MAVLink link, live."
+
+    override fun run() = runBlocking {
+        val gcs = reportingLinkErrors {
+            GroundStation.open(connect, this, GroundStationConfig(lostAfter = lostAfter))
+        }
+        val view = LiveView(out, json)
+        if (json) {
+            out.line(jsonLine("event" to "listening", "address" to gcs.link.address.toString(), "port" to gcs.link.localPort))
+        } else {
+            view.note("listening on ${gcs.link.address} (local port ${gcs.link.localPort})")
+        }
+        try {
+            val limit = duration
+            if (limit == null) view.show(gcs) else withTimeoutOrNull(limit) { view.show(gcs) }
+            view.render(gcs)
+        } finally {
+            gcs.close()
+        }
+        gcs.linkError.value?.let { reportingLinkErrors { throw it } }
+        Unit
+    }
+}
+
+/** Parses "10s", "1m 30s", "500ms" or ISO-8601 ("PT10S") as a duration, for CLI options. */
+internal fun String.toDurationOrNull(): Duration? = Duration.parseOrNull(this)?.takeIf { it.isPositive() }
+
+internal const val NOT_A_DURATION = "'%s' is not a positive duration (try 10s, 2m, 500ms)"
