@@ -7,7 +7,7 @@ import java.util.Collections
 
 /** How a field's wire bytes map onto the Java type that io.dronefleet's builder and getter use. */
 internal enum class FieldKind {
-    /** `int`: uint8/16, int8/16/32 (and a uint32 that io.dronefleet declares as int). */
+    /** `int`: uint8, uint16, int8, int16 and int32. */
     INT,
 
     /** `long`: uint32 and int64. */
