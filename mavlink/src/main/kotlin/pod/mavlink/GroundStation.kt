@@ -112,6 +112,16 @@ public class GroundStation private constructor(
         if (peer != null) link.send(bytes, peer) else link.sendToAll(bytes)
     }
 
+    /**
+     * Sends [message] where its target_system says: to that vehicle's address when it is known,
+     * to every peer when the target is 0 (broadcast), unknown, or the message has no target field.
+     */
+    public suspend fun send(message: Any) {
+        val target = MessageTargets.targetSystem(message)
+        val vehicle = if (target == null || target == 0) null else _vehicles.value[target]
+        if (vehicle != null) sendTo(vehicle, message) else broadcast(message)
+    }
+
     /** Sends [message] to every peer of the link. */
     public suspend fun broadcast(message: Any) {
         link.sendToAll(encode(message))

@@ -1,0 +1,72 @@
+package pod.mavlink
+
+import io.dronefleet.mavlink.common.GlobalPositionInt
+import io.dronefleet.mavlink.minimal.Heartbeat
+import io.dronefleet.mavlink.minimal.MavAutopilot
+import io.dronefleet.mavlink.minimal.MavState
+import io.dronefleet.mavlink.minimal.MavType
+import io.dronefleet.mavlink.util.EnumValue
+import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.nulls.shouldNotBeNull
+import io.kotest.matchers.shouldBe
+import io.kotest.matchers.string.shouldContain
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.filterNotNull
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.withContext
+import kotlinx.coroutines.withTimeout
+import pod.core.vehicle.VehicleType
+import pod.mavlink.codec.FrameEncoder
+import java.net.InetAddress
+import java.net.ServerSocket
+import kotlin.random.Random
+import kotlin.time.Duration.Companion.seconds
+
+class TcpLinkTest : StringSpec({
+
+    "a vehicle behind a TCP server is found from frames split at arbitrary byte boundaries, and a hang-up is reported" {
+        ServerSocket(0, 1, InetAddress.getByName("127.0.0.1")).use { server ->
+            coroutineScope {
+                val encoder = FrameEncoder()
+                val heartbeat = Heartbeat.builder().type(MavType.MAV_TYPE_HEXAROTOR).autopilot(MavAutopilot.MAV_AUTOPILOT_PX4)
+                    .baseMode(EnumValue.create(0)).systemStatus(MavState.MAV_STATE_STANDBY).mavlinkVersion(3).build()
+                val position = GlobalPositionInt.builder().lat(-338_688_000).lon(1_512_093_000).alt(40_000).relativeAlt(0).hdg(65535).build()
+                val stream = (0 until 20).flatMap { i ->
+                    listOf(encoder.encode(heartbeat, 7, 1, 2 * i), encoder.encode(position, 7, 1, 2 * i + 1)).flatMap { it.toList() }
+                }.toByteArray()
+
+                val serving = launch(Dispatchers.IO) {
+                    server.accept().use { client ->
+                        val random = Random(7)
+                        var at = 0
+                        while (at < stream.size) {
+                            val n = minOf(1 + random.nextInt(17), stream.size - at)
+                            client.getOutputStream().write(stream, at, n)
+                            client.getOutputStream().flush()
+                            at += n
+                        }
+                        // Keep the connection open until the station has seen the position.
+                        client.getInputStream().read(ByteArray(64))
+                    }
+                }
+                val gcs = GroundStation.open("tcp:127.0.0.1:${server.localPort}", this)
+                try {
+                    val vehicle = withTimeout(10.seconds) { gcs.vehicles.first { 7 in it } }.getValue(7)
+                    vehicle.identity.value.type shouldBe VehicleType.HEXAROTOR
+                    val at = withTimeout(10.seconds) { vehicle.telemetry.position.filterNotNull().first() }.location
+                    at.latitude shouldBe -33.8688
+                    at.longitude shouldBe 151.2093
+                    withTimeout(10.seconds) { vehicle.telemetry.linkQuality.first { it.received == 40L } }.lost shouldBe 0
+                    // The station's heartbeat reaches the server, whose read returns; it then hangs up.
+                    withContext(Dispatchers.IO) { serving.join() }
+                    val error = withTimeout(10.seconds) { gcs.linkError.filterNotNull().first() }
+                    error.message.shouldNotBeNull() shouldContain "closed by the remote"
+                } finally {
+                    gcs.close()
+                }
+            }
+        }
+    }
+})
