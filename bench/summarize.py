@@ -35,7 +35,8 @@ def load(path):
 def fmt_rate(value, error=None):
     if value is None:
         return "n/a"
-    if error is not None and error == error:  # NaN when JMH had too few iterations
+    # JMH writes the error as the string "NaN" when it had too few iterations to compute one.
+    if isinstance(error, (int, float)) and error == error:
         return f"{value:,.0f} ± {error:,.0f}"
     return f"{value:,.0f}"
 

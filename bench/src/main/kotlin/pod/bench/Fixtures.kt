@@ -4,6 +4,7 @@ import io.dronefleet.mavlink.annotations.MavlinkMessageInfo
 import io.dronefleet.mavlink.common.Attitude
 import io.dronefleet.mavlink.common.GlobalPositionInt
 import io.dronefleet.mavlink.common.MavSysStatusSensor
+import io.dronefleet.mavlink.common.MavSysStatusSensorExtended
 import io.dronefleet.mavlink.common.MissionCurrent
 import io.dronefleet.mavlink.common.MissionState
 import io.dronefleet.mavlink.common.SysStatus
@@ -42,9 +43,11 @@ object Fixtures {
                 .build()
         }),
         SYS_STATUS({
-            // The extended sensor bitmaps (MAVLink 2 extensions) stay zero, so they are truncated
-            // off the wire as ArduPilot does, and older decoders see the same payload.
+            // The extended sensor bitmaps (MAVLink 2 extensions) are zero, so they are truncated
+            // off the wire as ArduPilot does. They are set explicitly: a decoder yields 0 for them,
+            // and the builder's default (null) would not compare equal to that.
             val sensors = EnumValue.create<MavSysStatusSensor>(0x3520_FC2F)
+            val noExtendedSensors = EnumValue.create<MavSysStatusSensorExtended>(0)
             SysStatus.builder()
                 .onboardControlSensorsPresent(sensors)
                 .onboardControlSensorsEnabled(sensors)
@@ -55,6 +58,9 @@ object Fixtures {
                 .batteryRemaining(78)
                 .dropRateComm(3)
                 .errorsComm(17)
+                .onboardControlSensorsPresentExtended(noExtendedSensors)
+                .onboardControlSensorsEnabledExtended(noExtendedSensors)
+                .onboardControlSensorsHealthExtended(noExtendedSensors)
                 .build()
         }),
         ATTITUDE({

@@ -29,7 +29,7 @@ import kotlin.time.Duration.Companion.seconds
  * counts. Reports for each: offered rate, delivered rate, loss, and receiver CPU per datagram.
  *
  * Usage: `IngestBenchKt [--count N] [--rates 20000,50000,100000,max] [--repeats R]
- * [--send-limit 15s] [--json results.json]`. Every run is bounded by its count and by the send
+ * [--send-limit 15s] [--targets POD,NIO] [--thread-cpu true] [--json results.json]`. Every run is bounded by its count and by the send
  * limit, and the whole program ends by itself.
  */
 fun main(args: Array<String>) {
@@ -41,7 +41,7 @@ fun main(args: Array<String>) {
     val results = mutableListOf<IngestResult>()
     // A receiver that fails once (a codec still to be written) is reported and left out of the
     // remaining runs, so that the other's figures still come out.
-    val working = Target.entries.toMutableSet()
+    val working = options.targets.toMutableSet()
     fun attempt(target: Target, what: String, run: () -> IngestResult): IngestResult? = try {
         run()
     } catch (e: Exception) {
@@ -54,15 +54,17 @@ fun main(args: Array<String>) {
         null
     }
     // Warm-up: the first pass through the receive path runs interpreted and compiles as it goes.
-    for (target in Target.entries) {
-        attempt(target, "warm-up") { runOnce(target, OfferedLoad.UNTHROTTLED, minOf(options.count, WARMUP_COUNT), options.sendLimit) }
+    // It is paced at a rate Pod keeps up with, so that every datagram goes through (and trains
+    // the JIT on) the whole path; an unthrottled warm-up would mostly exercise the kernel's drops.
+    for (target in options.targets) {
+        attempt(target, "warm-up") { runOnce(target, WARMUP_LOAD, minOf(options.count, WARMUP_COUNT), options.sendLimit, false) }
             ?.let { println("  warm-up ${it.describe()} (discarded)") }
     }
     repeat(options.repeats) { round ->
         for (load in options.loads) {
             // Interleaved, so that slow drift of a noisy machine hits both receivers alike.
-            for (target in Target.entries.filter { it in working }) {
-                val result = attempt(target, "round ${round + 1}") { runOnce(target, load, options.count, options.sendLimit) } ?: continue
+            for (target in options.targets.filter { it in working }) {
+                val result = attempt(target, "round ${round + 1}") { runOnce(target, load, options.count, options.sendLimit, options.threadCpu) } ?: continue
                 println("  round ${round + 1}: ${result.describe()}")
                 results += result
             }
@@ -85,7 +87,8 @@ fun main(args: Array<String>) {
 /** Simulated vehicles sending at once (system ids 1..3). */
 const val SYSTEMS = 3
 
-private const val WARMUP_COUNT = 100_000
+private const val WARMUP_COUNT = 200_000
+private val WARMUP_LOAD = OfferedLoad(40_000)
 
 /** Requested SO_RCVBUF for both receivers: the size Pod's UdpLink asks for (Linux caps it at net.core.rmem_max). */
 private const val RECEIVE_BUFFER_BYTES = 4 shl 20
@@ -111,6 +114,9 @@ data class IngestOptions(
     val loads: List<OfferedLoad> = listOf(20_000, 50_000, 100_000).map { OfferedLoad(it) } + OfferedLoad.UNTHROTTLED,
     val repeats: Int = 3,
     val sendLimit: Duration = 15.seconds,
+    val targets: List<Target> = Target.entries,
+    /** Print each run's CPU time per JVM thread (where the receive path spends it). */
+    val threadCpu: Boolean = false,
     val json: File? = null,
 ) {
     companion object {
@@ -124,6 +130,8 @@ data class IngestOptions(
                     "--rates" -> options.copy(loads = value.split(',').map { OfferedLoad.parse(it.trim()) })
                     "--repeats" -> options.copy(repeats = value.toInt().also { require(it > 0) })
                     "--send-limit" -> options.copy(sendLimit = Duration.parse(value).also { require(it in 1.seconds..2.minutes) })
+                    "--targets" -> options.copy(targets = value.split(',').map { Target.valueOf(it.trim().uppercase()) })
+                    "--thread-cpu" -> options.copy(threadCpu = value.toBooleanStrict())
                     "--json" -> options.copy(json = File(value))
                     else -> error("unknown option ${args[i]}")
                 }
@@ -170,7 +178,7 @@ data class IngestResult(
  * Sends [count] datagrams at [load] to a fresh receiver of [target], and measures until everything
  * arrived or the receiver stayed idle for [SETTLE] after the last send.
  */
-fun runOnce(target: Target, load: OfferedLoad, count: Int, sendLimit: Duration): IngestResult {
+fun runOnce(target: Target, load: OfferedLoad, count: Int, sendLimit: Duration, threadCpu: Boolean): IngestResult {
     val receiver: Receiver = when (target) {
         Target.POD -> PodReceiver.open()
         Target.NIO -> NioReceiver()
@@ -181,6 +189,7 @@ fun runOnce(target: Target, load: OfferedLoad, count: Int, sendLimit: Duration):
             val threads = ManagementFactory.getThreadMXBean()
             val os = ManagementFactory.getOperatingSystemMXBean() as com.sun.management.OperatingSystemMXBean
             val drops0 = KernelUdpCounters.receiveBufferErrors()
+            val threadsBefore = if (threadCpu) ThreadCpu.snapshot() else emptyMap()
             val cpu0 = os.processCpuTime
             val poller0 = threads.currentThreadCpuTime
             val start = System.nanoTime()
@@ -212,6 +221,7 @@ fun runOnce(target: Target, load: OfferedLoad, count: Int, sendLimit: Duration):
             sending.join(SETTLE.inWholeMilliseconds)
             val receiverCpu = os.processCpuTime - cpu0 - outcome.cpuNanos - (threads.currentThreadCpuTime - poller0)
             val drops1 = KernelUdpCounters.receiveBufferErrors()
+            if (threadCpu) ThreadCpu.print(threadsBefore, ThreadCpu.snapshot(), "${target.label} at ${load.label}")
             val sendSeconds = (outcome.endNanos - start) / 1e9
             val receiveSeconds = (lastChange - start) / 1e9
             return IngestResult(
@@ -416,6 +426,23 @@ class Sender(target: InetSocketAddress) : AutoCloseable {
             direct(Fixtures.mavlink2Datagram(Fixtures.vehicleHeartbeat(), systemId, Fixtures.COMPONENT_ID, sequence))
 
         fun direct(bytes: ByteArray): ByteBuffer = ByteBuffer.allocateDirect(bytes.size).put(bytes).flip()
+    }
+}
+
+/** CPU time per live JVM thread, to see where a receive path spends it. */
+object ThreadCpu {
+    fun snapshot(): Map<Long, Pair<String, Long>> {
+        val bean = ManagementFactory.getThreadMXBean()
+        return bean.allThreadIds.associateWith { id -> (bean.getThreadInfo(id)?.threadName ?: "?") to bean.getThreadCpuTime(id) }
+            .filterValues { it.second >= 0 }
+    }
+
+    fun print(before: Map<Long, Pair<String, Long>>, after: Map<Long, Pair<String, Long>>, label: String) {
+        println("    thread CPU during $label:")
+        after.map { (id, nameAndCpu) -> nameAndCpu.first to nameAndCpu.second - (before[id]?.second ?: 0L) }
+            .filter { it.second > 1_000_000 }
+            .sortedByDescending { it.second }
+            .forEach { (name, nanos) -> println(String.format(Locale.ROOT, "      %8.1f ms  %s", nanos / 1e6, name)) }
     }
 }
 
