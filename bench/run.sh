@@ -43,7 +43,7 @@ java -cp "$cp" pod.bench.WriteFixturesKt "$results/fixtures"
 echo "== JMH decode benchmarks (ops/s = frames/s, one frame per op)"
 # A failing benchmark (e.g. a codec that throws) is reported by JMH and the run goes on.
 timeout 600 java -cp "$cp" org.openjdk.jmh.Main "${jmh_settings[@]}" \
-  -jvmArgs "-Xms512m -Xmx512m" -rf json -rff "$results/jmh.json" 'pod\.bench\..*Benchmark' \
+  -jvmArgs "-Xms512m -Xmx512m" -prof gc -rf json -rff "$results/jmh.json" 'pod\.bench\..*Benchmark' \
   || echo "JMH exited with $? (results so far are kept)"
 
 echo "== pymavlink decode (same datagrams)"

@@ -41,23 +41,49 @@ def fmt_rate(value, error=None):
     return f"{value:,.0f}"
 
 
-def decode_table(jmh, py):
-    jvm = {}
+def jvm_scores(jmh):
+    """(benchmark, message) -> (score, error, allocated bytes per op or None)."""
+    scores = {}
     for entry in jmh or []:
         message = entry.get("params", {}).get("message")
         metric = entry["primaryMetric"]
-        jvm[(entry["benchmark"], message)] = (metric["score"], metric.get("scoreError"))
-    pyr = {(r["api"], r["message"]): r["framesPerSecond"] for r in (py or {}).get("results", [])}
+        alloc = entry.get("secondaryMetrics", {}).get("\u00b7gc.alloc.rate.norm", {}).get("score")
+        scores[(entry["benchmark"], message)] = (metric["score"], metric.get("scoreError"), alloc)
+    return scores
 
-    columns = [title for _, title in JVM_COLUMNS] + [title for _, title in PY_COLUMNS]
+
+def decode_table(jmh, py):
+    """One row per decoder, one column per message: the implementations side by side."""
+    jvm = jvm_scores(jmh)
+    pyr = {(r["api"], r["message"]): r["framesPerSecond"] for r in (py or {}).get("results", [])}
     lines = [
-        "| message | " + " | ".join(columns) + " |",
-        "|---|" + "---:|" * len(columns),
+        "| decoder | " + " | ".join(MESSAGES) + " |",
+        "|---|" + "---:|" * len(MESSAGES),
     ]
-    for message in MESSAGES:
-        cells = [fmt_rate(*jvm.get((bench, message), (None, None))) for bench, _ in JVM_COLUMNS]
-        cells += [fmt_rate(pyr.get((api, message))) for api, _ in PY_COLUMNS]
-        lines.append(f"| {message} | " + " | ".join(cells) + " |")
+    for bench, title in JVM_COLUMNS:
+        cells = [fmt_rate(*jvm.get((bench, m), (None, None, None))[:2]) for m in MESSAGES]
+        lines.append(f"| {title} | " + " | ".join(cells) + " |")
+    for api, title in PY_COLUMNS:
+        cells = [fmt_rate(pyr.get((api, m))) for m in MESSAGES]
+        lines.append(f"| {title} | " + " | ".join(cells) + " |")
+    return "\n".join(lines)
+
+
+def allocation_table(jmh):
+    """Bytes allocated per decoded frame (JMH -prof gc), where measured."""
+    jvm = jvm_scores(jmh)
+    if not any(v[2] is not None for v in jvm.values()):
+        return None
+    lines = [
+        "| decoder | " + " | ".join(MESSAGES) + " |",
+        "|---|" + "---:|" * len(MESSAGES),
+    ]
+    for bench, title in JVM_COLUMNS:
+        cells = []
+        for m in MESSAGES:
+            alloc = jvm.get((bench, m), (None, None, None))[2]
+            cells.append("n/a" if alloc is None else f"{alloc:,.0f}")
+        lines.append(f"| {title} | " + " | ".join(cells) + " |")
     return "\n".join(lines)
 
 
@@ -114,12 +140,16 @@ def main():
     parser.add_argument("--ingest")
     args = parser.parse_args()
     jmh, py, ingest = load(args.jmh), load(args.pymavlink), load(args.ingest)
-    print("### Decode, one frame per operation (frames/s, higher is better)\n")
+    print("### Decode, one frame per operation (frames/s on one thread, higher is better; JMH ± is its 99.9 % interval)\n")
     print(decode_table(jmh, py))
     ratios = ratio_lines(jmh, py)
     if ratios:
         print()
         print(ratios)
+    allocations = allocation_table(jmh)
+    if allocations:
+        print("\n### Allocation per decoded frame (bytes/op, JMH -prof gc)\n")
+        print(allocations)
     print("\n### UDP ingest on loopback, GLOBAL_POSITION_INT from 3 vehicles\n")
     print(ingest_table(ingest))
 
