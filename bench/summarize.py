@@ -47,7 +47,9 @@ def jvm_scores(jmh):
     for entry in jmh or []:
         message = entry.get("params", {}).get("message")
         metric = entry["primaryMetric"]
-        alloc = entry.get("secondaryMetrics", {}).get("\u00b7gc.alloc.rate.norm", {}).get("score")
+        secondary = entry.get("secondaryMetrics", {})
+        # JMH 1.37 names it "gc.alloc.rate.norm"; older versions prefix a middle dot.
+        alloc = (secondary.get("gc.alloc.rate.norm") or secondary.get("\u00b7gc.alloc.rate.norm") or {}).get("score")
         scores[(entry["benchmark"], message)] = (metric["score"], metric.get("scoreError"), alloc)
     return scores
 
