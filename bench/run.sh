@@ -3,10 +3,10 @@
 #   1. JMH decode benchmarks: Pod, io.dronefleet (reflective payload decoder, MavlinkConnection)
 #   2. pymavlink decoding the same datagrams
 #   3. UDP ingest on loopback: Pod GroundStation vs a bare NIO receiver, at several offered rates
-# Sized for a 2-core machine: about 7 minutes in all. Results land in bench/target/results/.
+# Sized for a 2-core machine: about 6.5 minutes in all. Results land in bench/target/results/.
 #
 #   bench/run.sh           the full run (the figures in BENCHMARKS.md)
-#   bench/run.sh --quick   a one-minute smoke run with short settings (figures not meaningful)
+#   bench/run.sh --quick   a 1.5-minute smoke run with short settings (figures not meaningful)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
