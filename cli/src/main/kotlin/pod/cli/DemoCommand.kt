@@ -12,6 +12,7 @@ import com.github.ajalt.clikt.parameters.types.restrictTo
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.TimeoutCancellationException
 import kotlinx.coroutines.flow.filterIsInstance
+import kotlinx.coroutines.flow.filterNotNull
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.runBlocking
@@ -54,8 +55,10 @@ internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo"
             view.note("ground station listening on 127.0.0.1:${gcs.link.localPort}; starting $count simulated vehicles")
             vehicles.forEach { it.start(this) }
             step("every vehicle connected with a position", 20) {
-                gcs.vehicles.first { fleet ->
-                    fleet.size == count && fleet.values.all { it.telemetry.position.value != null && it.telemetry.battery.value != null }
+                val fleet = gcs.vehicles.first { it.size == count }
+                for (v in fleet.values) {
+                    v.telemetry.position.filterNotNull().first()
+                    v.telemetry.battery.filterNotNull().first()
                 }
             }
             delay(showFor) // let people watch the live table for a moment
