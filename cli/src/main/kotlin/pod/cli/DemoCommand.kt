@@ -70,8 +70,8 @@ internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo"
             victim.stop()
             step("vehicle ${victim.config.systemId} marked lost", lostAfter.inWholeSeconds + 10) { lost.join() }
             val stillUp = gcs.vehicles.value.values.count { it.connection.value == ConnectionState.CONNECTED }
-            view.render(gcs)
             view.note("done: $stillUp of $count vehicles connected, vehicle ${victim.config.systemId} lost")
+            view.render(gcs)
             if (json) out.line(jsonLine("event" to "demo_done", "connected" to stillUp, "lost" to victim.config.systemId))
         } finally {
             shown.cancel()
