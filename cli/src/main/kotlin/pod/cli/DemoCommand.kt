@@ -10,6 +10,7 @@ import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.int
 import com.github.ajalt.clikt.parameters.types.restrictTo
 import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.CoroutineStart
 import kotlinx.coroutines.TimeoutCancellationException
 import kotlinx.coroutines.flow.filterIsInstance
 import kotlinx.coroutines.flow.filterNotNull
@@ -64,7 +65,7 @@ internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo"
             delay(showFor) // let people watch the live table for a moment
             val victim = vehicles.last()
             view.note("stopping vehicle ${victim.config.systemId}: it should be marked lost after ${lostAfter.inWholeSeconds} s of silence")
-            val lost = launch {
+            val lost = launch(start = CoroutineStart.UNDISPATCHED) {
                 gcs.events.filterIsInstance<FleetEvent.Lost>().first { it.vehicle.systemId == victim.config.systemId }
             }
             victim.stop()
