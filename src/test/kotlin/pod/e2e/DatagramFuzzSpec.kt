@@ -36,7 +36,7 @@ class DatagramFuzzSpec : StringSpec({
             val gcs = GroundStation.open("udpin://127.0.0.1:0", this)
             val fleet = SimFleet.start(3, this, SimVehicleConfig(systemId = 1, gcs = "udpout://127.0.0.1:${gcs.link.localPort}"))
             try {
-                withTimeout(10.seconds) { gcs.vehicles.first { all -> all.size == 3 && all.values.all { it.telemetry.position.value != null } } }
+                withTimeout(10.seconds) { gcs.awaitFleetWithPositions(3) }
 
                 val sent = withContext(Dispatchers.IO) { throwDatagrams(gcs.link.localPort, count = 100_000, seed = 20261122) }
                 sent shouldBe 100_000

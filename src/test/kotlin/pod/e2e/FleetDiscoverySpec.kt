@@ -38,7 +38,7 @@ class FleetDiscoverySpec : StringSpec({
             try {
                 sims.forEach { it.start(this) }
                 val fleet = withTimeout(10.seconds) {
-                    gcs.vehicles.first { all -> all.size == 3 && all.values.all { it.telemetry.position.value != null } }
+                    gcs.awaitFleetWithPositions(3)
                 }
                 fleet.keys shouldContainExactlyInAnyOrder listOf(1, 2, 3)
                 for (config in configs) {

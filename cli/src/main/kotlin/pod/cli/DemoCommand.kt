@@ -10,8 +10,10 @@ import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.int
 import com.github.ajalt.clikt.parameters.types.restrictTo
 import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.CoroutineStart
 import kotlinx.coroutines.TimeoutCancellationException
 import kotlinx.coroutines.flow.filterIsInstance
+import kotlinx.coroutines.flow.filterNotNull
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.runBlocking
@@ -54,21 +56,23 @@ internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo"
             view.note("ground station listening on 127.0.0.1:${gcs.link.localPort}; starting $count simulated vehicles")
             vehicles.forEach { it.start(this) }
             step("every vehicle connected with a position", 20) {
-                gcs.vehicles.first { fleet ->
-                    fleet.size == count && fleet.values.all { it.telemetry.position.value != null && it.telemetry.battery.value != null }
+                val fleet = gcs.vehicles.first { it.size == count }
+                for (v in fleet.values) {
+                    v.telemetry.position.filterNotNull().first()
+                    v.telemetry.battery.filterNotNull().first()
                 }
             }
             delay(showFor) // let people watch the live table for a moment
             val victim = vehicles.last()
             view.note("stopping vehicle ${victim.config.systemId}: it should be marked lost after ${lostAfter.inWholeSeconds} s of silence")
-            val lost = launch {
+            val lost = launch(start = CoroutineStart.UNDISPATCHED) {
                 gcs.events.filterIsInstance<FleetEvent.Lost>().first { it.vehicle.systemId == victim.config.systemId }
             }
             victim.stop()
             step("vehicle ${victim.config.systemId} marked lost", lostAfter.inWholeSeconds + 10) { lost.join() }
             val stillUp = gcs.vehicles.value.values.count { it.connection.value == ConnectionState.CONNECTED }
-            view.render(gcs)
             view.note("done: $stillUp of $count vehicles connected, vehicle ${victim.config.systemId} lost")
+            view.render(gcs)
             if (json) out.line(jsonLine("event" to "demo_done", "connected" to stillUp, "lost" to victim.config.systemId))
         } finally {
             shown.cancel()

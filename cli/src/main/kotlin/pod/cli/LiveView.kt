@@ -2,7 +2,9 @@ package pod.cli
 
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.delay
+import kotlinx.coroutines.flow.onSubscription
 import kotlinx.coroutines.launch
+import pod.mavlink.FleetEvent
 import pod.mavlink.GroundStation
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
@@ -21,8 +23,11 @@ internal class LiveView(
     private val recent = ArrayDeque<String>()
 
     suspend fun show(gcs: GroundStation): Nothing = coroutineScope {
+        val announced = HashSet<Int>()
         launch {
-            gcs.events.collect { event ->
+            // Vehicles found before we subscribed are announced once, right after subscribing.
+            gcs.events.onSubscription { gcs.vehicles.value.values.forEach { emit(FleetEvent.Found(it)) } }.collect { event ->
+                if (event is FleetEvent.Found && !announced.add(event.vehicle.systemId)) return@collect
                 if (json) {
                     out.line(FleetView.eventJson(event))
                 } else {

@@ -57,7 +57,7 @@ public class SimVehicle(
         ),
     )
     private val _state = MutableStateFlow(model.state)
-    private val rates = HashMap(config.streamRates)
+    private val rates = MutableStateFlow(config.streamRates)
     private val streams = HashMap<Int, Job>()
     private val bootedAt = TimeSource.Monotonic.markNow()
     private val messages = SimMessages(config, bootedAt)
@@ -66,6 +66,9 @@ public class SimVehicle(
 
     /** The simulated physical state, updated at 20 Hz while running. */
     public val state: StateFlow<SimState> = _state.asStateFlow()
+
+    /** Message id → rate in Hz of what it streams now, as configured or as a ground station asked. */
+    public val streamRates: StateFlow<Map<Int, Double>> = rates.asStateFlow()
 
     /** The local UDP port the vehicle sends from, or null when stopped. */
     public val localPort: Int? get() = link?.localPort
@@ -90,7 +93,7 @@ public class SimVehicle(
         scope.launch { receive(link) }
         scope.launch { physics() }
         scope.launch { every(1.seconds) { send(messages.heartbeat(model.state)) } }
-        for ((id, hz) in rates) restartStream(scope, id, hz)
+        for ((id, hz) in rates.value) restartStream(scope, id, hz)
     }
 
     /** Stops sending and closes the socket; the ground station will see the vehicle fall silent. */
@@ -156,7 +159,7 @@ public class SimVehicle(
             else -> 1_000_000.0 / intervalUs
         }
         if (hz > 1000) return MavResult.MAV_RESULT_DENIED
-        rates[messageId] = hz
+        rates.value = rates.value + (messageId to hz)
         scope?.let { restartStream(it, messageId, hz) }
         return MavResult.MAV_RESULT_ACCEPTED
     }

@@ -9,6 +9,7 @@ import io.ktor.utils.io.core.buildPacket
 import io.ktor.utils.io.core.writeFully
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.channels.ClosedReceiveChannelException
+import kotlinx.coroutines.channels.ClosedSendChannelException
 import kotlinx.io.readByteArray
 import java.net.BindException
 import java.net.SocketException
@@ -49,11 +50,12 @@ internal class UdpLink private constructor(
     }
 
     override suspend fun send(bytes: ByteArray, peer: LinkPeer) {
-        if (socket.outgoing.isClosedForSend) return
         try {
             socket.send(Datagram(buildPacket { writeFully(bytes) }, peer.socketAddress))
         } catch (e: SocketException) {
             // UDP gives no delivery guarantee anyway; a send to a vanished peer is a lost datagram.
+        } catch (e: ClosedSendChannelException) {
+            // close() was called: nothing more goes out.
         }
     }
 

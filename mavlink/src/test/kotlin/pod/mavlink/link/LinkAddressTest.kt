@@ -2,37 +2,36 @@ package pod.mavlink.link
 
 import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.StringSpec
-import io.kotest.data.forAll
-import io.kotest.data.row
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 
 class LinkAddressTest : StringSpec({
 
     "MAVSDK and pymavlink forms parse to the same address" {
-        forAll(
-            row("udpin://0.0.0.0:14550", LinkAddress.UdpIn("0.0.0.0", 14550)),
-            row("udpin:0.0.0.0:14550", LinkAddress.UdpIn("0.0.0.0", 14550)),
-            row("udp://:14540", LinkAddress.UdpIn("0.0.0.0", 14540)),
-            row("udpout://127.0.0.1:14550", LinkAddress.UdpOut("127.0.0.1", 14550)),
-            row("udpout:127.0.0.1:14550", LinkAddress.UdpOut("127.0.0.1", 14550)),
-            row("tcp://127.0.0.1:5760", LinkAddress.Tcp("127.0.0.1", 5760)),
-            row("tcp:localhost:5760", LinkAddress.Tcp("localhost", 5760)),
-            row("udpin://[::1]:14550", LinkAddress.UdpIn("::1", 14550)),
-        ) { text, expected -> LinkAddress.parse(text) shouldBe expected }
+        listOf(
+            Pair("udpin://0.0.0.0:14550", LinkAddress.UdpIn("0.0.0.0", 14550)),
+            Pair("udpin:0.0.0.0:14550", LinkAddress.UdpIn("0.0.0.0", 14550)),
+            Pair("udp://:14540", LinkAddress.UdpIn("0.0.0.0", 14540)),
+            Pair("udpout://127.0.0.1:14550", LinkAddress.UdpOut("127.0.0.1", 14550)),
+            Pair("udpout:127.0.0.1:14550", LinkAddress.UdpOut("127.0.0.1", 14550)),
+            Pair("tcp://127.0.0.1:5760", LinkAddress.Tcp("127.0.0.1", 5760)),
+            Pair("tcp:localhost:5760", LinkAddress.Tcp("localhost", 5760)),
+            Pair("udpin://[::1]:14550", LinkAddress.UdpIn("::1", 14550)),
+        ).forEach { (text, expected) -> LinkAddress.parse(text) shouldBe expected }
     }
 
     "a bad connection string names what was expected" {
-        forAll(
-            row("serial:/dev/ttyUSB0", "expected udpin://"),
-            row("udpin://0.0.0.0", "expected udpin://"),
-            row("udpout://127.0.0.1:99999", "port must be 0..65535, was 99999"),
-            row("udpout://127.0.0.1:0", "udpout needs a destination port"),
-            row("tcp:127.0.0.1:0", "tcp needs a destination port"),
-        ) { text, reason ->
+        listOf(
+            Pair("serial:/dev/ttyUSB0", "expected udpin://"),
+            Pair("udpin://0.0.0.0", "expected udpin://"),
+            Pair("udpout://127.0.0.1:99999", "port must be 0..65535, was 99999"),
+            Pair("udpout://127.0.0.1:0", "udpout needs a destination port"),
+            Pair("tcp:127.0.0.1:0", "tcp needs a destination port"),
+        ).forEach { (text, reason) ->
             val error = shouldThrow<InvalidConnectionString> { LinkAddress.parse(text) }
             error.message!! shouldContain reason
             error.text shouldBe text
         }
     }
 })
+

@@ -1,8 +1,6 @@
 package pod.mavlink.telemetry
 
 import io.kotest.core.spec.style.StringSpec
-import io.kotest.data.forAll
-import io.kotest.data.row
 import io.kotest.matchers.nulls.shouldBeNull
 import io.kotest.matchers.shouldBe
 import pod.core.vehicle.Autopilot
@@ -11,23 +9,23 @@ import pod.core.vehicle.VehicleType
 class FlightModesTest : StringSpec({
 
     "ArduPilot and PX4 mode numbers from the autopilots' own tables" {
-        forAll(
-            row(Autopilot.ARDUPILOT, VehicleType.QUADROTOR, 3L, "AUTO"),
-            row(Autopilot.ARDUPILOT, VehicleType.QUADROTOR, 4L, "GUIDED"),
-            row(Autopilot.ARDUPILOT, VehicleType.QUADROTOR, 6L, "RTL"),
-            row(Autopilot.ARDUPILOT, VehicleType.QUADROTOR, 9L, "LAND"),
-            row(Autopilot.ARDUPILOT, VehicleType.QUADROTOR, 17L, "BRAKE"),
-            row(Autopilot.ARDUPILOT, VehicleType.FIXED_WING, 10L, "AUTO"),
-            row(Autopilot.ARDUPILOT, VehicleType.FIXED_WING, 11L, "RTL"),
-            row(Autopilot.ARDUPILOT, VehicleType.FIXED_WING, 12L, "LOITER"),
-            row(Autopilot.ARDUPILOT, VehicleType.FIXED_WING, 15L, "GUIDED"),
-            row(Autopilot.PX4, VehicleType.QUADROTOR, (4L shl 16) or (4L shl 24), "AUTO.MISSION"),
-            row(Autopilot.PX4, VehicleType.QUADROTOR, (4L shl 16) or (3L shl 24), "AUTO.LOITER"),
-            row(Autopilot.PX4, VehicleType.QUADROTOR, (4L shl 16) or (5L shl 24), "AUTO.RTL"),
-            row(Autopilot.PX4, VehicleType.QUADROTOR, (4L shl 16) or (6L shl 24), "AUTO.LAND"),
-            row(Autopilot.PX4, VehicleType.QUADROTOR, (4L shl 16) or (2L shl 24), "AUTO.TAKEOFF"),
-            row(Autopilot.PX4, VehicleType.QUADROTOR, 3L shl 16, "POSCTL"),
-        ) { autopilot, type, number, name ->
+        listOf(
+            Row(Autopilot.ARDUPILOT, VehicleType.QUADROTOR, 3L, "AUTO"),
+            Row(Autopilot.ARDUPILOT, VehicleType.QUADROTOR, 4L, "GUIDED"),
+            Row(Autopilot.ARDUPILOT, VehicleType.QUADROTOR, 6L, "RTL"),
+            Row(Autopilot.ARDUPILOT, VehicleType.QUADROTOR, 9L, "LAND"),
+            Row(Autopilot.ARDUPILOT, VehicleType.QUADROTOR, 17L, "BRAKE"),
+            Row(Autopilot.ARDUPILOT, VehicleType.FIXED_WING, 10L, "AUTO"),
+            Row(Autopilot.ARDUPILOT, VehicleType.FIXED_WING, 11L, "RTL"),
+            Row(Autopilot.ARDUPILOT, VehicleType.FIXED_WING, 12L, "LOITER"),
+            Row(Autopilot.ARDUPILOT, VehicleType.FIXED_WING, 15L, "GUIDED"),
+            Row(Autopilot.PX4, VehicleType.QUADROTOR, (4L shl 16) or (4L shl 24), "AUTO.MISSION"),
+            Row(Autopilot.PX4, VehicleType.QUADROTOR, (4L shl 16) or (3L shl 24), "AUTO.LOITER"),
+            Row(Autopilot.PX4, VehicleType.QUADROTOR, (4L shl 16) or (5L shl 24), "AUTO.RTL"),
+            Row(Autopilot.PX4, VehicleType.QUADROTOR, (4L shl 16) or (6L shl 24), "AUTO.LAND"),
+            Row(Autopilot.PX4, VehicleType.QUADROTOR, (4L shl 16) or (2L shl 24), "AUTO.TAKEOFF"),
+            Row(Autopilot.PX4, VehicleType.QUADROTOR, 3L shl 16, "POSCTL"),
+        ).forEach { (autopilot, type, number, name) ->
             FlightModes.decode(autopilot, type, number).name shouldBe name
             FlightModes.customMode(autopilot, type, name) shouldBe number
         }
@@ -40,3 +38,5 @@ class FlightModesTest : StringSpec({
         FlightModes.customMode(Autopilot.PX4, VehicleType.QUADROTOR, "POSCTL.MISSION").shouldBeNull()
     }
 })
+
+private data class Row<A, B, C, D>(val a: A, val b: B, val c: C, val d: D)
