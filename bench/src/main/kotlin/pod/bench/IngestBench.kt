@@ -1,0 +1,499 @@
+package pod.bench
+
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.SupervisorJob
+import kotlinx.coroutines.cancel
+import kotlinx.coroutines.runBlocking
+import pod.mavlink.GroundStation
+import pod.mavlink.GroundStationConfig
+import java.io.File
+import java.lang.management.ManagementFactory
+import java.net.InetSocketAddress
+import java.net.StandardSocketOptions
+import java.nio.ByteBuffer
+import java.nio.channels.ClosedChannelException
+import java.nio.channels.DatagramChannel
+import java.util.Locale
+import java.util.concurrent.locks.LockSupport
+import kotlin.concurrent.thread
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.minutes
+import kotlin.time.Duration.Companion.seconds
+
+/**
+ * End-to-end UDP ingest on loopback: one sender thread pushes pre-encoded GLOBAL_POSITION_INT
+ * datagrams from [SYSTEMS] vehicles (which first announced themselves with HEARTBEATs) at a few
+ * offered rates, to a Pod [GroundStation] and, for reference, to a bare NIO receiver that only
+ * counts. Reports for each: offered rate, delivered rate, loss, and receiver CPU per datagram.
+ *
+ * Usage: `IngestBenchKt [--count N] [--rates 20000,50000,100000,max] [--repeats R]
+ * [--send-limit 15s] [--targets POD,NIO] [--thread-cpu true] [--json results.json]`. Every run is bounded by its count and by the send
+ * limit, and the whole program ends by itself.
+ */
+fun main(args: Array<String>) {
+    val options = IngestOptions.parse(args)
+    println(
+        "ingest: ${options.count} datagrams per run, GLOBAL_POSITION_INT from $SYSTEMS systems, loopback, " +
+            "rates ${options.loads.joinToString { it.label }}, ${options.repeats} repeat(s), send limit ${options.sendLimit}",
+    )
+    val results = mutableListOf<IngestResult>()
+    // A receiver that fails once (a codec still to be written) is reported and left out of the
+    // remaining runs, so that the other's figures still come out.
+    val working = options.targets.toMutableSet()
+    fun attempt(target: Target, what: String, run: () -> IngestResult): IngestResult? = try {
+        run()
+    } catch (e: Exception) {
+        println("  $what ${target.label}: FAILED, left out from now on: $e")
+        working -= target
+        null
+    } catch (e: NotImplementedError) {
+        println("  $what ${target.label}: FAILED, left out from now on: $e")
+        working -= target
+        null
+    }
+    // Warm-up: the first pass through the receive path runs interpreted and compiles as it goes.
+    // It is paced at a rate Pod keeps up with, so that every datagram goes through (and trains
+    // the JIT on) the whole path; an unthrottled warm-up would mostly exercise the kernel's drops.
+    for (target in options.targets) {
+        attempt(target, "warm-up") { runOnce(target, WARMUP_LOAD, minOf(options.count, WARMUP_COUNT), options.sendLimit, false) }
+            ?.let { println("  warm-up ${it.describe()} (discarded)") }
+    }
+    repeat(options.repeats) { round ->
+        for (load in options.loads) {
+            // Interleaved, so that slow drift of a noisy machine hits both receivers alike.
+            for (target in options.targets.filter { it in working }) {
+                val result = attempt(target, "round ${round + 1}") { runOnce(target, load, options.count, options.sendLimit, options.threadCpu) } ?: continue
+                println("  round ${round + 1}: ${result.describe()}")
+                results += result
+            }
+        }
+    }
+    if (results.isEmpty()) {
+        println("ingest: no results")
+        return
+    }
+    val summary = summarize(results)
+    println()
+    println(table(summary))
+    options.json?.let { file ->
+        file.parentFile?.mkdirs()
+        file.writeText(toJson(summary))
+        println("wrote ${file.path}")
+    }
+}
+
+/** Simulated vehicles sending at once (system ids 1..3). */
+const val SYSTEMS = 3
+
+private const val WARMUP_COUNT = 200_000
+private val WARMUP_LOAD = OfferedLoad(40_000)
+
+/** Requested SO_RCVBUF for both receivers: the size Pod's UdpLink asks for (Linux caps it at net.core.rmem_max). */
+private const val RECEIVE_BUFFER_BYTES = 4 shl 20
+
+/** How long a receiver may stay idle after the sender finished before the run is declared over. */
+private val SETTLE = 500.milliseconds
+
+/** An offered load: datagrams per second, or as fast as the sender can go when [perSecond] is null. */
+data class OfferedLoad(val perSecond: Int?) {
+    val label: String get() = perSecond?.let { "%,d/s".format(Locale.ROOT, it) } ?: "unthrottled"
+
+    companion object {
+        val UNTHROTTLED = OfferedLoad(null)
+
+        fun parse(text: String): OfferedLoad =
+            if (text == "max") UNTHROTTLED else OfferedLoad(text.replace("_", "").toInt().also { require(it > 0) })
+    }
+}
+
+/** Command line of the ingest harness. */
+data class IngestOptions(
+    val count: Int = 200_000,
+    val loads: List<OfferedLoad> = listOf(20_000, 50_000, 100_000).map { OfferedLoad(it) } + OfferedLoad.UNTHROTTLED,
+    val repeats: Int = 3,
+    val sendLimit: Duration = 15.seconds,
+    val targets: List<Target> = Target.entries,
+    /** Print each run's CPU time per JVM thread (where the receive path spends it). */
+    val threadCpu: Boolean = false,
+    val json: File? = null,
+) {
+    companion object {
+        fun parse(args: Array<String>): IngestOptions {
+            var options = IngestOptions()
+            var i = 0
+            while (i < args.size) {
+                val value = args.getOrNull(i + 1) ?: error("missing value after ${args[i]}")
+                options = when (args[i]) {
+                    "--count" -> options.copy(count = value.replace("_", "").toInt().also { require(it > 0) })
+                    "--rates" -> options.copy(loads = value.split(',').map { OfferedLoad.parse(it.trim()) })
+                    "--repeats" -> options.copy(repeats = value.toInt().also { require(it > 0) })
+                    "--send-limit" -> options.copy(sendLimit = Duration.parse(value).also { require(it in 1.seconds..2.minutes) })
+                    "--targets" -> options.copy(targets = value.split(',').map { Target.valueOf(it.trim().uppercase()) })
+                    "--thread-cpu" -> options.copy(threadCpu = value.toBooleanStrict())
+                    "--json" -> options.copy(json = File(value))
+                    else -> error("unknown option ${args[i]}")
+                }
+                i += 2
+            }
+            return options
+        }
+    }
+}
+
+/** The two receivers compared. */
+enum class Target(val label: String) {
+    POD("Pod GroundStation"),
+    NIO("bare NIO DatagramChannel"),
+}
+
+/** One run: what was offered and what came out. */
+data class IngestResult(
+    val target: Target,
+    val load: OfferedLoad,
+    val sent: Long,
+    val offeredPerSecond: Double,
+    val delivered: Long,
+    val deliveredPerSecond: Double,
+    /** Process CPU spent while receiving, minus the sender's and the poller's own: receive path, GC and JIT. */
+    val receiverCpuNanos: Long,
+    /** Datagrams the kernel dropped for a full receive buffer during the run (Linux /proc/net/snmp), or -1. */
+    val kernelDrops: Long,
+    /** Frames Pod itself counted as lost from sequence gaps (null for the NIO receiver). */
+    val podGapLoss: Long?,
+) {
+    val lossPercent: Double get() = if (sent == 0L) 0.0 else 100.0 * (sent - delivered) / sent
+    val cpuMicrosPerDatagram: Double get() = if (delivered == 0L) Double.NaN else receiverCpuNanos / 1000.0 / delivered
+
+    fun describe(): String = String.format(
+        Locale.ROOT,
+        "%-24s %-12s sent %,9d at %,9.0f/s  delivered %,9d at %,9.0f/s  loss %5.1f%%  cpu %.2f µs/dgram  kernel drops %,d%s",
+        target.label, load.label, sent, offeredPerSecond, delivered, deliveredPerSecond, lossPercent,
+        cpuMicrosPerDatagram, kernelDrops, podGapLoss?.let { ", Pod's gap count $it" } ?: "",
+    )
+}
+
+/**
+ * Sends [count] datagrams at [load] to a fresh receiver of [target], and measures until everything
+ * arrived or the receiver stayed idle for [SETTLE] after the last send.
+ */
+fun runOnce(target: Target, load: OfferedLoad, count: Int, sendLimit: Duration, threadCpu: Boolean): IngestResult {
+    val receiver: Receiver = when (target) {
+        Target.POD -> PodReceiver.open()
+        Target.NIO -> NioReceiver()
+    }
+    receiver.use {
+        Sender(receiver.address).use { sender ->
+            receiver.announce(sender)
+            val threads = ManagementFactory.getThreadMXBean()
+            val os = ManagementFactory.getOperatingSystemMXBean() as com.sun.management.OperatingSystemMXBean
+            val drops0 = KernelUdpCounters.receiveBufferErrors()
+            val threadsBefore = if (threadCpu) ThreadCpu.snapshot() else emptyMap()
+            val cpu0 = os.processCpuTime
+            val poller0 = threads.currentThreadCpuTime
+            val start = System.nanoTime()
+
+            val outcome = SendOutcome()
+            val sending = thread(name = "ingest-sender") {
+                sender.sendPositions(count, load, start, start + sendLimit.inWholeNanoseconds, outcome)
+            }
+
+            // Poll the receiver's count every millisecond and note when it last moved: the delivered
+            // rate is what arrived over the time it took to arrive.
+            var seen = 0L
+            var lastChange = start
+            val hardStop = start + (sendLimit + 10.seconds).inWholeNanoseconds
+            while (true) {
+                LockSupport.parkNanos(1_000_000)
+                val now = System.nanoTime()
+                val processed = receiver.processed()
+                if (processed != seen) {
+                    seen = processed
+                    lastChange = now
+                }
+                if (outcome.done) {
+                    if (seen >= outcome.sent) break
+                    if (now - maxOf(lastChange, outcome.endNanos) > SETTLE.inWholeNanoseconds) break
+                }
+                if (now > hardStop) break
+            }
+            sending.join(SETTLE.inWholeMilliseconds)
+            val receiverCpu = os.processCpuTime - cpu0 - outcome.cpuNanos - (threads.currentThreadCpuTime - poller0)
+            val drops1 = KernelUdpCounters.receiveBufferErrors()
+            if (threadCpu) ThreadCpu.print(threadsBefore, ThreadCpu.snapshot(), "${target.label} at ${load.label}")
+            val sendSeconds = (outcome.endNanos - start) / 1e9
+            val receiveSeconds = (lastChange - start) / 1e9
+            return IngestResult(
+                target = target,
+                load = load,
+                sent = outcome.sent,
+                offeredPerSecond = if (sendSeconds > 0) outcome.sent / sendSeconds else 0.0,
+                delivered = seen,
+                deliveredPerSecond = if (receiveSeconds > 0) seen / receiveSeconds else 0.0,
+                receiverCpuNanos = receiverCpu,
+                kernelDrops = if (drops0 < 0 || drops1 < 0) -1 else drops1 - drops0,
+                podGapLoss = receiver.gapLoss(),
+            )
+        }
+    }
+}
+
+/** A receiver under test, bound to an ephemeral loopback port. */
+interface Receiver : AutoCloseable {
+    val address: InetSocketAddress
+
+    /** Makes the receiver ready for the position stream (Pod needs the vehicles' HEARTBEATs first). */
+    fun announce(sender: Sender) {}
+
+    /** Position datagrams processed so far. */
+    fun processed(): Long
+
+    /** Frames the receiver itself counted as lost, when it can tell. */
+    fun gapLoss(): Long? = null
+}
+
+/**
+ * A Pod ground station on `udpin://127.0.0.1:0`. A datagram counts as processed once the station
+ * decoded it and routed it into a vehicle's telemetry (its `linkQuality.received`).
+ */
+class PodReceiver private constructor(
+    private val scope: CoroutineScope,
+    private val station: GroundStation,
+) : Receiver {
+    private var baselineReceived = 0L
+    private var baselineLost = 0L
+
+    override val address: InetSocketAddress = InetSocketAddress("127.0.0.1", station.link.localPort)
+
+    override fun announce(sender: Sender) {
+        // HEARTBEATs until all vehicles exist, bounded; the station only routes frames of systems it knows.
+        val deadline = System.nanoTime() + ANNOUNCE_LIMIT.inWholeNanoseconds
+        while (station.vehicles.value.size < SYSTEMS) {
+            check(System.nanoTime() < deadline) {
+                "Pod found ${station.vehicles.value.size} of $SYSTEMS vehicles within $ANNOUNCE_LIMIT (stats ${station.stats.value})"
+            }
+            sender.sendHeartbeats()
+            Thread.sleep(50)
+        }
+        // Let late duplicate HEARTBEATs land before taking the baseline.
+        Thread.sleep(200)
+        baselineReceived = sumReceived()
+        baselineLost = sumLost()
+    }
+
+    override fun processed(): Long = sumReceived() - baselineReceived
+
+    override fun gapLoss(): Long = sumLost() - baselineLost
+
+    private fun sumReceived(): Long = station.vehicles.value.values.sumOf { it.telemetry.linkQuality.value.received }
+
+    private fun sumLost(): Long = station.vehicles.value.values.sumOf { it.telemetry.linkQuality.value.lost }
+
+    override fun close() {
+        station.close()
+        scope.cancel()
+    }
+
+    companion object {
+        private val ANNOUNCE_LIMIT = 5.seconds
+
+        /** Opens a station that asks for no streams and never marks a vehicle lost during a run. */
+        fun open(): PodReceiver {
+            val scope = CoroutineScope(SupervisorJob() + Dispatchers.Default)
+            val config = GroundStationConfig(streamRates = emptyMap(), lostAfter = 10.minutes)
+            val station = runBlocking { GroundStation.open("udpin://127.0.0.1:0", scope, config) }
+            return PodReceiver(scope, station)
+        }
+    }
+}
+
+/** The floor: a blocking NIO receive loop on its own thread that only counts datagrams. */
+class NioReceiver : Receiver {
+    private val channel: DatagramChannel = DatagramChannel.open()
+        .setOption(StandardSocketOptions.SO_RCVBUF, RECEIVE_BUFFER_BYTES)
+        .bind(InetSocketAddress("127.0.0.1", 0))
+
+    // One writer (the receive thread), read by the poller: a volatile plain counter is enough.
+    @Volatile private var count = 0L
+
+    private val receiving = thread(name = "nio-receiver", isDaemon = true) {
+        val buffer = ByteBuffer.allocateDirect(2048)
+        try {
+            while (true) {
+                buffer.clear()
+                channel.receive(buffer)
+                count++
+            }
+        } catch (_: ClosedChannelException) {
+            // close() ends the loop
+        }
+    }
+
+    override val address: InetSocketAddress = channel.localAddress as InetSocketAddress
+
+    override fun processed(): Long = count
+
+    override fun close() {
+        channel.close()
+        receiving.join(1_000)
+    }
+}
+
+/** What the sender thread did; written by it, read by the poller after [done]. */
+class SendOutcome {
+    @Volatile var sent = 0L
+    @Volatile var endNanos = 0L
+    @Volatile var cpuNanos = 0L
+    @Volatile var done = false
+}
+
+/**
+ * A plain NIO sender connected to one receiver, holding every datagram pre-encoded: per system,
+ * one GLOBAL_POSITION_INT for each of the 256 sequence numbers (latitude varying with it, so each
+ * position differs from the last), sent in order so sequence numbers stay gap-free.
+ */
+class Sender(target: InetSocketAddress) : AutoCloseable {
+    private val channel: DatagramChannel = DatagramChannel.open()
+        .setOption(StandardSocketOptions.SO_SNDBUF, 1 shl 20)
+        .bind(InetSocketAddress("127.0.0.1", 0))
+        .connect(target)
+    private val nextSequence = IntArray(SYSTEMS)
+    private val positions = Array(SYSTEMS) { system -> Array(256) { sequence -> positionDatagram(system + 1, sequence) } }
+    private val heartbeats = Array(SYSTEMS) { system -> Array(256) { sequence -> heartbeatDatagram(system + 1, sequence) } }
+
+    /** Sends one HEARTBEAT from each system. */
+    fun sendHeartbeats() {
+        for (system in 0 until SYSTEMS) send(heartbeats[system][nextSequence(system)])
+    }
+
+    /**
+     * Sends [count] position datagrams, round-robin over the systems, at [load] from [start], until
+     * done or [deadline]; records the outcome. Pacing parks until the next datagram is due and then
+     * sends all that are due, so the average rate is exact without spinning a core.
+     */
+    fun sendPositions(count: Int, load: OfferedLoad, start: Long, deadline: Long, outcome: SendOutcome) {
+        val cpu0 = ManagementFactory.getThreadMXBean().currentThreadCpuTime
+        val nanosPerDatagram = load.perSecond?.let { 1e9 / it }
+        var sent = 0L
+        try {
+            while (sent < count) {
+                if (nanosPerDatagram != null) {
+                    val due = start + (sent * nanosPerDatagram).toLong()
+                    val now = System.nanoTime()
+                    if (now < due) {
+                        LockSupport.parkNanos(due - now)
+                        continue
+                    }
+                }
+                if ((sent and 0x3FF) == 0L && System.nanoTime() > deadline) break
+                val system = (sent % SYSTEMS).toInt()
+                send(positions[system][nextSequence(system)])
+                sent++
+            }
+        } finally {
+            outcome.sent = sent
+            outcome.endNanos = System.nanoTime()
+            outcome.cpuNanos = ManagementFactory.getThreadMXBean().currentThreadCpuTime - cpu0
+            outcome.done = true
+        }
+    }
+
+    private fun nextSequence(system: Int): Int {
+        val sequence = nextSequence[system]
+        nextSequence[system] = (sequence + 1) and 0xFF
+        return sequence
+    }
+
+    private fun send(datagram: ByteBuffer) {
+        datagram.clear()
+        channel.write(datagram)
+    }
+
+    override fun close() {
+        channel.close()
+    }
+
+    private companion object {
+        fun positionDatagram(systemId: Int, sequence: Int): ByteBuffer = direct(
+            Fixtures.mavlink2Datagram(
+                Fixtures.globalPosition(latitudeE7 = 473_977_418 + 10 * sequence, timeBootMs = 1_000L + 250L * sequence),
+                systemId, Fixtures.COMPONENT_ID, sequence,
+            ),
+        )
+
+        fun heartbeatDatagram(systemId: Int, sequence: Int): ByteBuffer =
+            direct(Fixtures.mavlink2Datagram(Fixtures.vehicleHeartbeat(), systemId, Fixtures.COMPONENT_ID, sequence))
+
+        fun direct(bytes: ByteArray): ByteBuffer = ByteBuffer.allocateDirect(bytes.size).put(bytes).flip()
+    }
+}
+
+/** CPU time per live JVM thread, to see where a receive path spends it. */
+object ThreadCpu {
+    fun snapshot(): Map<Long, Pair<String, Long>> {
+        val bean = ManagementFactory.getThreadMXBean()
+        return bean.allThreadIds.associateWith { id -> (bean.getThreadInfo(id)?.threadName ?: "?") to bean.getThreadCpuTime(id) }
+            .filterValues { it.second >= 0 }
+    }
+
+    fun print(before: Map<Long, Pair<String, Long>>, after: Map<Long, Pair<String, Long>>, label: String) {
+        println("    thread CPU during $label:")
+        after.map { (id, nameAndCpu) -> nameAndCpu.first to nameAndCpu.second - (before[id]?.second ?: 0L) }
+            .filter { it.second > 1_000_000 }
+            .sortedByDescending { it.second }
+            .forEach { (name, nanos) -> println(String.format(Locale.ROOT, "      %8.1f ms  %s", nanos / 1e6, name)) }
+    }
+}
+
+/** Linux's UDP counters: where datagrams that never reached a receiver went. */
+object KernelUdpCounters {
+    /** `Udp: RcvbufErrors` from /proc/net/snmp (datagrams dropped because a receive buffer was full), or -1. */
+    fun receiveBufferErrors(): Long = try {
+        val lines = File("/proc/net/snmp").readLines().filter { it.startsWith("Udp: ") }
+        val names = lines[0].split(' ')
+        val values = lines[1].split(' ')
+        values[names.indexOf("RcvbufErrors")].toLong()
+    } catch (_: Exception) {
+        -1
+    }
+}
+
+/** Median of each (target, load) over the repeats, ordered as offered. */
+data class IngestSummary(val target: Target, val load: OfferedLoad, val runs: List<IngestResult>) {
+    private fun median(values: List<Double>): Double = values.sorted().let { s ->
+        if (s.size % 2 == 1) s[s.size / 2] else (s[s.size / 2 - 1] + s[s.size / 2]) / 2
+    }
+
+    val offered: Double get() = median(runs.map { it.offeredPerSecond })
+    val delivered: Double get() = median(runs.map { it.deliveredPerSecond })
+    val loss: Double get() = median(runs.map { it.lossPercent })
+    val lossRange: ClosedFloatingPointRange<Double> get() = runs.minOf { it.lossPercent }..runs.maxOf { it.lossPercent }
+    val cpuMicros: Double get() = median(runs.map { it.cpuMicrosPerDatagram })
+}
+
+private fun summarize(results: List<IngestResult>): List<IngestSummary> =
+    results.groupBy { it.load to it.target }.map { (key, runs) -> IngestSummary(key.second, key.first, runs) }
+
+private fun table(summary: List<IngestSummary>): String = buildString {
+    appendLine("Ingest (median of ${summary.first().runs.size} run(s); loss range in brackets)")
+    appendLine("| offered load | target | offered (dgram/s) | delivered (dgram/s) | loss | receiver CPU (µs/dgram) |")
+    appendLine("|---|---|---:|---:|---:|---:|")
+    for (s in summary) {
+        appendLine(
+            String.format(
+                Locale.ROOT, "| %s | %s | %,.0f | %,.0f | %.1f %% [%.1f–%.1f] | %.2f |",
+                s.load.label, s.target.label, s.offered, s.delivered, s.loss, s.lossRange.start, s.lossRange.endInclusive, s.cpuMicros,
+            ),
+        )
+    }
+}
+
+private fun toJson(summary: List<IngestSummary>): String = summary.joinToString(",\n", "[\n", "\n]\n") { s ->
+    String.format(
+        Locale.ROOT,
+        "  {\"target\": \"%s\", \"load\": \"%s\", \"offered\": %.1f, \"delivered\": %.1f, \"lossPercent\": %.2f, " +
+            "\"lossMin\": %.2f, \"lossMax\": %.2f, \"cpuMicrosPerDatagram\": %.3f, \"runs\": %d}",
+        s.target.name, s.load.label, s.offered, s.delivered, s.loss, s.lossRange.start, s.lossRange.endInclusive, s.cpuMicros, s.runs.size,
+    )
+}
