@@ -1,0 +1,50 @@
+package pod.mavlink.mission
+
+import kotlin.time.Duration
+
+/** A mission transfer (upload, download, clear, set-current) that did not succeed. */
+public sealed class MissionException(message: String) : Exception(message) {
+    /** Which list the transfer concerned. */
+    public abstract val type: MissionType
+}
+
+/** The vehicle answered with an error [result]; [seq] is the item it concerned, when known. */
+public class MissionRejected(
+    override val type: MissionType,
+    /** What the vehicle said. */
+    public val result: MissionResult,
+    /** The item the vehicle most likely rejected (the last one it was sent), or null. */
+    public val seq: Int?,
+    operation: String,
+) : MissionException("$operation of ${type.name.lowercase()} rejected by the vehicle: ${result.name}" + (seq?.let { " (at item $it)" } ?: ""))
+
+/** No answer after [retries] timeouts in a row (the last one [lastTimeout] long). */
+public class MissionTimeout(
+    override val type: MissionType,
+    /** Timeouts in a row that ended the transfer. */
+    public val retries: Int,
+    /** The last timeout waited. */
+    public val lastTimeout: Duration,
+    /** What the transfer was waiting for. */
+    public val waitingFor: String,
+    operation: String,
+) : MissionException("$operation of ${type.name.lowercase()} timed out waiting for $waitingFor after $retries retries (last timeout $lastTimeout)")
+
+/** The items cannot be sent: [seq] names the first bad item and [reason] says why. */
+public class InvalidMission(
+    override val type: MissionType,
+    /** The first bad item's position. */
+    public val seq: Int,
+    /** What is wrong with it. */
+    public val reason: String,
+) : MissionException("invalid ${type.name.lowercase()} item $seq: $reason")
+
+/**
+ * The upload's final MISSION_ACK never came and a download of what the vehicle holds differs from
+ * what was sent: the vehicle may hold the old list, a partial one, or its own edit of ours.
+ */
+public class MissionNotConfirmed(
+    override val type: MissionType,
+    /** What the vehicle holds now. */
+    public val onBoard: List<MissionItem>,
+) : MissionException("upload of ${type.name.lowercase()} not confirmed: the vehicle never acknowledged it and holds ${onBoard.size} other items")

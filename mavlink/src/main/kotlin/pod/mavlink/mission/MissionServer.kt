@@ -1,0 +1,235 @@
+package pod.mavlink.mission
+
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
+
+/** How a [MissionServer] behaves where ArduPilot and PX4 differ. */
+public enum class MissionServerFlavor {
+    /**
+     * Requests items with the legacy MISSION_REQUEST, answers an unexpected item with a non-final
+     * MISSION_ACK INVALID_SEQUENCE, re-requests after 1 s and gives up after 8 s with
+     * OPERATION_CANCELLED, overwrites item 0 of a MISSION with home, answers a repeated last item
+     * after completion with ERROR, supports MISSION_WRITE_PARTIAL_LIST.
+     */
+    ARDUPILOT,
+
+    /**
+     * Requests with MISSION_REQUEST_INT, ignores unexpected items, re-requests after 250 ms and
+     * gives up silently after 5 s, keeps item 0, acknowledges a repeated last item again, ignores
+     * partial writes.
+     */
+    PX4,
+}
+
+/**
+ * Vehicle side of the mission protocol for all three lists, as a pure state machine: feed it the
+ * ground station's messages and the clock (nanoseconds, any origin), send what it returns, and
+ * call [onTimeout] when [nextTimeoutAt] passes.
+ *
+ * Unlike ArduPilot, a list is replaced only when its transfer completes: a failed or cancelled
+ * upload leaves the old list whole. Downloads are stateless (any request, any order).
+ */
+public class MissionServer(
+    /** Where the behaviour follows ArduPilot or PX4. */
+    public val flavor: MissionServerFlavor,
+    /** Most items a list may hold; larger uploads get MAV_MISSION_NO_SPACE. */
+    public val maxItems: Int = 1000,
+    /** Re-request period; null for the flavour's own (1 s ArduPilot, 250 ms PX4). */
+    rerequest: Duration? = null,
+) {
+    private val rerequestNanos = (rerequest ?: if (flavor == MissionServerFlavor.ARDUPILOT) 1.seconds else 250.milliseconds).inWholeNanoseconds
+    private val giveUpNanos = (if (flavor == MissionServerFlavor.ARDUPILOT) 8.seconds else 5.seconds).inWholeNanoseconds
+    private val lists = HashMap<MissionType, List<MissionItem>>()
+    private var upload: Upload? = null
+    private var completed: Pair<MissionType, Int>? = null // type and last seq of the latest completed upload
+
+    private class Upload(val type: MissionType, val base: List<MissionItem>, val start: Int, val end: Int, var expected: Int, var lastActivity: Long) {
+        val buffer = base.toMutableList()
+    }
+
+    /** Home, written over item 0 of an uploaded MISSION by the ArduPilot flavour. */
+    public var home: MissionItem? = null
+
+    /** The item being executed in the MISSION list. */
+    public var current: Int = 0
+        private set
+
+    /** When [onTimeout] should be called next (same clock as the inputs), or null when idle. */
+    public var nextTimeoutAt: Long? = null
+        private set
+
+    /** What the vehicle holds in [type]'s list. */
+    public fun list(type: MissionType): List<MissionItem> = lists[type].orEmpty()
+
+    /** Replaces [type]'s list directly (as if loaded from storage). */
+    public fun load(type: MissionType, items: List<MissionItem>) {
+        lists[type] = items.mapIndexed { i, item -> item.copy(seq = i, missionType = type) }
+    }
+
+    /** Handles one message from the ground station at time [now]; returns the replies. */
+    public fun onMessage(message: MissionMessage, now: Long): List<MissionMessage> = when (message) {
+        is MissionMessage.Count -> onCount(message.type, message.count, now)
+        is MissionMessage.WritePartial -> onWritePartial(message, now)
+        is MissionMessage.Item -> onItem(message.item, now)
+        is MissionMessage.RequestList -> if (busy(message.type)) deny(message.type) else listOf(MissionMessage.Count(message.type, list(message.type).size))
+        is MissionMessage.Request -> onRequest(message)
+        is MissionMessage.ClearAll -> if (busy(message.type)) deny(message.type) else {
+            lists.remove(message.type)
+            if (message.type == MissionType.MISSION) current = 0
+            listOf(MissionMessage.Ack(message.type, MissionResult.ACCEPTED))
+        }
+        is MissionMessage.SetCurrent -> {
+            if (message.seq in list(MissionType.MISSION).indices) current = message.seq
+            listOf(MissionMessage.Current(current, list(MissionType.MISSION).size))
+        }
+        is MissionMessage.Ack -> {
+            val up = upload
+            if (up != null && message.type == up.type && message.result == MissionResult.OPERATION_CANCELLED) idle()
+            emptyList()
+        }
+        is MissionMessage.Current -> emptyList()
+    }
+
+    /** Re-requests the expected item, or abandons an upload that has been silent too long. */
+    public fun onTimeout(now: Long): List<MissionMessage> {
+        val up = upload ?: return emptyList()
+        if (now - up.lastActivity >= giveUpNanos) {
+            idle()
+            return if (flavor == MissionServerFlavor.ARDUPILOT) listOf(MissionMessage.Ack(up.type, MissionResult.OPERATION_CANCELLED)) else emptyList()
+        }
+        nextTimeoutAt = now + rerequestNanos
+        return listOf(request(up))
+    }
+
+    private fun onCount(type: MissionType, count: Int, now: Long): List<MissionMessage> {
+        val up = upload
+        if (up != null && up.type == type && flavor == MissionServerFlavor.PX4 && up.expected == 0) {
+            nextTimeoutAt = now + rerequestNanos
+            return listOf(request(up)) // PX4: a repeated count before item 0 is a lost request's echo
+        }
+        if (up != null && up.type != type) return deny(type)
+        if (up != null && flavor == MissionServerFlavor.PX4) return listOf(MissionMessage.Ack(type, MissionResult.ERROR)) // "Busy"; goes on
+        if (count > maxItems) {
+            idle()
+            return listOf(MissionMessage.Ack(type, MissionResult.NO_SPACE))
+        }
+        if (count == 0) {
+            idle()
+            lists.remove(type)
+            completed = null
+            return listOf(MissionMessage.Ack(type, MissionResult.ACCEPTED))
+        }
+        return begin(Upload(type, List(count) { placeholder(type, it) }, 0, count - 1, 0, now), now)
+    }
+
+    private fun onWritePartial(message: MissionMessage.WritePartial, now: Long): List<MissionMessage> {
+        if (flavor == MissionServerFlavor.PX4) return emptyList()
+        if (busy(message.type)) return deny(message.type)
+        val base = list(message.type)
+        if (message.start < 0 || message.end < message.start || message.end >= base.size) {
+            return listOf(MissionMessage.Ack(message.type, MissionResult.ERROR))
+        }
+        return begin(Upload(message.type, base, message.start, message.end, message.start, now), now)
+    }
+
+    private fun begin(up: Upload, now: Long): List<MissionMessage> {
+        upload = up
+        completed = null
+        nextTimeoutAt = now + rerequestNanos
+        return listOf(request(up))
+    }
+
+    private fun onItem(item: MissionItem, now: Long): List<MissionMessage> {
+        val up = upload
+        if (up == null || item.missionType != up.type) {
+            val done = completed
+            if (done != null && item.missionType == done.first && item.seq == done.second) {
+                // The ground station missed our final ACK and repeats the last item.
+                return listOf(MissionMessage.Ack(item.missionType, if (flavor == MissionServerFlavor.PX4) MissionResult.ACCEPTED else MissionResult.ERROR))
+            }
+            return listOf(MissionMessage.Ack(item.missionType, MissionResult.ERROR))
+        }
+        if (item.seq != up.expected) {
+            return if (flavor == MissionServerFlavor.ARDUPILOT) listOf(MissionMessage.Ack(up.type, MissionResult.INVALID_SEQUENCE)) else emptyList()
+        }
+        val problem = problemWith(item)
+        if (problem != null) {
+            idle()
+            return listOf(MissionMessage.Ack(up.type, problem))
+        }
+        up.buffer[item.seq] = item.copy(current = false)
+        up.lastActivity = now
+        if (up.expected < up.end) {
+            up.expected++
+            nextTimeoutAt = now + rerequestNanos
+            return listOf(request(up))
+        }
+        commit(up)
+        return listOf(MissionMessage.Ack(up.type, MissionResult.ACCEPTED))
+    }
+
+    private fun onRequest(request: MissionMessage.Request): List<MissionMessage> {
+        if (busy(request.type)) return deny(request.type)
+        val items = list(request.type)
+        if (request.seq !in items.indices) return listOf(MissionMessage.Ack(request.type, MissionResult.INVALID_SEQUENCE))
+        val item = items[request.seq]
+        return listOf(MissionMessage.Item(if (request.type == MissionType.MISSION) item.copy(current = request.seq == current) else item))
+    }
+
+    private fun commit(up: Upload) {
+        var items = up.buffer.toList()
+        val home = home
+        if (flavor == MissionServerFlavor.ARDUPILOT && up.type == MissionType.MISSION && home != null && items.isNotEmpty()) {
+            items = listOf(home.copy(seq = 0, current = false, missionType = MissionType.MISSION)) + items.drop(1)
+        }
+        lists[up.type] = items
+        if (up.type == MissionType.MISSION && current >= items.size) current = 0
+        completed = up.type to up.end
+        idle()
+    }
+
+    /** The MAV_MISSION_RESULT a real autopilot would answer to [item], or null when it is acceptable. */
+    private fun problemWith(item: MissionItem): MissionResult? = when (item.missionType) {
+        MissionType.MISSION -> when {
+            item.frame !in MissionItem.GLOBAL_FRAMES && item.frame != MissionItem.FRAME_MISSION && item.frame !in MissionItem.LOCAL_FRAMES -> MissionResult.UNSUPPORTED_FRAME
+            else -> coordinateProblem(item)
+        }
+        MissionType.FENCE -> when {
+            item.command !in 5000..5004 -> MissionResult.UNSUPPORTED
+            !item.isGlobal -> MissionResult.UNSUPPORTED_FRAME
+            else -> coordinateProblem(item)
+        }
+        MissionType.RALLY -> when {
+            item.command != 5100 -> MissionResult.UNSUPPORTED
+            !item.isGlobal -> MissionResult.UNSUPPORTED_FRAME
+            else -> coordinateProblem(item)
+        }
+    } ?: when {
+        item.param1.isNaN() -> MissionResult.INVALID_PARAM1
+        item.param2.isNaN() -> MissionResult.INVALID_PARAM2
+        item.param3.isNaN() -> MissionResult.INVALID_PARAM3
+        !item.z.isFinite() -> MissionResult.INVALID_PARAM7
+        else -> null
+    }
+
+    private fun coordinateProblem(item: MissionItem): MissionResult? = when {
+        !item.isGlobal -> null
+        item.x !in -900_000_000..900_000_000 -> MissionResult.INVALID_PARAM5_X
+        item.y !in -1_800_000_000..1_800_000_000 -> MissionResult.INVALID_PARAM6_Y
+        else -> null
+    }
+
+    private fun busy(type: MissionType): Boolean = upload?.type == type
+
+    private fun deny(type: MissionType) = listOf(MissionMessage.Ack(type, MissionResult.DENIED))
+
+    private fun request(up: Upload) = MissionMessage.Request(up.type, up.expected, legacy = flavor == MissionServerFlavor.ARDUPILOT)
+
+    private fun idle() {
+        upload = null
+        nextTimeoutAt = null
+    }
+
+    private fun placeholder(type: MissionType, seq: Int) = MissionItem(seq = seq, frame = MissionItem.FRAME_MISSION, command = 0, missionType = type)
+}

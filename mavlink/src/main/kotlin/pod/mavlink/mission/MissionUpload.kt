@@ -1,0 +1,130 @@
+package pod.mavlink.mission
+
+import kotlin.time.Duration.Companion.nanoseconds
+
+/**
+ * Ground-station side of an upload, as a pure state machine: feed it the vehicle's messages and
+ * timer expiries with the driver's clock reading (nanoseconds), send what each [MissionStep] says.
+ *
+ * The vehicle leads (MISSION_COUNT, then it requests each item); every request is answered with
+ * MISSION_ITEM_INT, legacy MISSION_REQUEST included. Requests older than the newest are stale and
+ * ignored. When the next request is late the machine does not wait for the vehicle's own
+ * re-request timer: it resends the last item and sends the next one unasked — whichever of the two
+ * was lost (our item, or the vehicle's request), the transfer moves on after one timeout. Vehicles
+ * answer an unexpected item harmlessly (ArduPilot with a non-final MISSION_ACK INVALID_SEQUENCE,
+ * which is ignored here; PX4 silently). If the final MISSION_ACK does not come, the last item is
+ * resent (PX4 and Pod's simulator then acknowledge again); when the budget runs out the outcome is
+ * [TransferOutcome.AckMissing] and the driver finds out what the vehicle holds.
+ */
+internal class MissionUpload(
+    private val type: MissionType,
+    private val items: List<MissionItem>,
+    private val timing: TransferTiming,
+) {
+    private enum class Phase { COUNTING, SENDING, AWAITING_ACK, ENDED }
+
+    private val rtt = RoundTripEstimator(timing)
+    private var phase = Phase.COUNTING
+    private var newest = -1 // highest seq the vehicle has requested
+    private val firstSentAt = LongArray(items.size) { UNSENT }
+    private var timeoutsInARow = 0
+    private var lastItemSent = false
+    private var errorsAfterLastItem = 0
+
+    private var accepted = false
+
+    /** Items the vehicle has confirmed: those before the newest it asked for, or all once it accepted. */
+    val progress: TransferProgress
+        get() = TransferProgress(if (accepted) items.size else newest.coerceAtLeast(0), items.size)
+
+    fun start(): MissionStep<Unit> = MissionStep(listOf(MissionMessage.Count(type, items.size)), rtt.timeoutNanos)
+
+    fun onMessage(message: MissionMessage, now: Long): MissionStep<Unit> {
+        if (phase == Phase.ENDED) return MissionStep.NOTHING
+        return when (message) {
+            is MissionMessage.Request -> if (message.type == type) onRequest(message.seq, now) else MissionStep.NOTHING
+            is MissionMessage.Ack -> if (message.type == type) onAck(message.result) else MissionStep.NOTHING
+            else -> MissionStep.NOTHING
+        }
+    }
+
+    fun onTimeout(): MissionStep<Unit> {
+        if (phase == Phase.ENDED) return MissionStep.NOTHING
+        timeoutsInARow++
+        if (timeoutsInARow > timing.retries) {
+            val waited = rtt.timeoutNanos.nanoseconds
+            return end(
+                if (phase == Phase.AWAITING_ACK) {
+                    TransferOutcome.AckMissing
+                } else {
+                    TransferOutcome.Failed(
+                        MissionTimeout(type, timing.retries, waited, if (phase == Phase.COUNTING) "the first item request" else "a request for item ${newest + 1}", "upload"),
+                    )
+                },
+            )
+        }
+        rtt.backOff()
+        val resend = when (phase) {
+            Phase.COUNTING -> listOf(MissionMessage.Count(type, items.size))
+            Phase.SENDING -> listOf(item(newest), item(newest + 1)).also {
+                firstSentAt[newest] = RETRANSMITTED
+                firstSentAt[newest + 1] = RETRANSMITTED
+            }
+            Phase.AWAITING_ACK -> listOf(item(items.size - 1))
+            Phase.ENDED -> emptyList()
+        }
+        return MissionStep(resend, rtt.timeoutNanos)
+    }
+
+    private fun onRequest(seq: Int, now: Long): MissionStep<Unit> {
+        if (seq !in items.indices || seq < newest) return MissionStep.NOTHING // out of range, or stale
+        if (seq > newest) {
+            // Karn: only a request answering an item sent once measures the round trip.
+            if (newest >= 0 && seq == newest + 1 && firstSentAt[newest] >= 0) rtt.sample(now - firstSentAt[newest])
+            rtt.progressed()
+            timeoutsInARow = 0
+            newest = seq
+        }
+        firstSentAt[seq] = if (firstSentAt[seq] == UNSENT) now else RETRANSMITTED
+        phase = if (seq == items.size - 1) Phase.AWAITING_ACK else Phase.SENDING
+        return MissionStep(listOf(item(seq)), rtt.timeoutNanos)
+    }
+
+    private fun onAck(result: MissionResult): MissionStep<Unit> = when {
+        // A stale ACCEPTED (from an earlier transfer) must not pass for this one: only once the
+        // last item has gone out (asked for, or sent unasked after a lost request) can it be ours.
+        result == MissionResult.ACCEPTED && (items.isEmpty() || lastItemSent) -> {
+            accepted = true
+            end(TransferOutcome.Done(Unit))
+        }
+        result == MissionResult.ACCEPTED -> MissionStep.NOTHING
+        // ArduPilot's answer to an unexpected item; the transfer goes on.
+        result == MissionResult.INVALID_SEQUENCE -> MissionStep.NOTHING
+        // Once the last item is out, ERROR is what ArduPilot and PX4 answer to a late or repeated
+        // item after they completed the upload: the outcome is unknown, not failed.
+        // Ask once more (PX4 and Pod's simulator acknowledge a repeated last item again); ArduPilot
+        // keeps answering ERROR, and then only a download can tell.
+        result == MissionResult.ERROR && lastItemSent -> if (++errorsAfterLastItem >= 3) {
+            end(TransferOutcome.AckMissing)
+        } else {
+            phase = Phase.AWAITING_ACK
+            MissionStep(listOf(item(items.size - 1)))
+        }
+        else -> end(TransferOutcome.Failed(MissionRejected(type, result, newest.takeIf { it >= 0 }, "upload")))
+    }
+
+    private fun end(outcome: TransferOutcome<Unit>): MissionStep<Unit> {
+        phase = Phase.ENDED
+        return MissionStep(timerNanos = MissionStep.NO_TIMER, outcome = outcome)
+    }
+
+    private fun item(seq: Int): MissionMessage.Item {
+        if (seq == items.size - 1) lastItemSent = true
+        return MissionMessage.Item(items[seq])
+    }
+
+    private companion object {
+        const val UNSENT = -1L
+        const val RETRANSMITTED = -2L
+    }
+}

@@ -1,0 +1,77 @@
+package pod.mavlink.mission
+
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
+
+/**
+ * Timeouts and retry budget of a mission transfer.
+ *
+ * The timeout adapts to the measured round trip (smoothed round trip plus four deviations, as TCP
+ * does), between [minTimeout] and [maxTimeout]; it starts at [initialTimeout] and doubles (up to four
+ * times) after each timeout without progress. A transfer fails after [retries] timeouts in a row without
+ * progress. Download keeps up to [window] requests in flight.
+ */
+public data class TransferTiming(
+    /** Timeout before any round trip was measured. */
+    public val initialTimeout: Duration = 500.milliseconds,
+    /** Shortest timeout, whatever the measured round trip. */
+    public val minTimeout: Duration = 40.milliseconds,
+    /** Longest timeout, after backing off. */
+    public val maxTimeout: Duration = 2.seconds,
+    /**
+     * Timeouts in a row without progress before the transfer fails. Generous on purpose: at 30 %
+     * loss each way about half the retry rounds fail, and a dead link is noticed sooner from the
+     * vehicle's heartbeat.
+     */
+    public val retries: Int = 20,
+    /** Download requests kept in flight at most. */
+    public val window: Int = 16,
+) {
+    init {
+        require(minTimeout.isPositive()) { "minTimeout must be > 0, was $minTimeout" }
+        require(maxTimeout >= minTimeout) { "maxTimeout must be ≥ minTimeout ($minTimeout), was $maxTimeout" }
+        require(initialTimeout in minTimeout..maxTimeout) { "initialTimeout must be in $minTimeout..$maxTimeout, was $initialTimeout" }
+        require(retries >= 1) { "retries must be ≥ 1, was $retries" }
+        require(window in 1..256) { "window must be in 1..256, was $window" }
+    }
+}
+
+/** Round-trip estimate and the timeout it implies; times are nanoseconds on the driver's clock. */
+internal class RoundTripEstimator(private val timing: TransferTiming) {
+    private var smoothed = -1.0
+    private var deviation = 0.0
+    private var backoff = 1
+
+    /** Nanoseconds to wait for an answer now. */
+    val timeoutNanos: Long
+        get() {
+            val base = if (smoothed < 0) timing.initialTimeout.inWholeNanoseconds.toDouble() else smoothed + 4 * deviation
+            val clamped = base.coerceIn(timing.minTimeout.inWholeNanoseconds.toDouble(), timing.maxTimeout.inWholeNanoseconds.toDouble())
+            return (clamped * backoff).toLong().coerceAtMost(timing.maxTimeout.inWholeNanoseconds)
+        }
+
+    /** A measured round trip (only of messages sent once: a retransmission's answer is ambiguous). */
+    fun sample(nanos: Long) {
+        val r = nanos.toDouble().coerceAtLeast(0.0)
+        if (smoothed < 0) {
+            smoothed = r
+            deviation = r / 2
+        } else {
+            deviation = 0.75 * deviation + 0.25 * kotlin.math.abs(smoothed - r)
+            smoothed = 0.875 * smoothed + 0.125 * r
+        }
+        backoff = 1
+    }
+
+    /** A timeout passed without an answer: wait twice as long next time (up to the maximum). */
+    fun backOff() {
+        // Capped low: on a lossy radio a late answer is a lost one far more often than congestion.
+        if (backoff < 4) backoff *= 2
+    }
+
+    /** An answer arrived: stop backing off. */
+    fun progressed() {
+        backoff = 1
+    }
+}

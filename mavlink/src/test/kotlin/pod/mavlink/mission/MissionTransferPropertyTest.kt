@@ -1,0 +1,118 @@
+package pod.mavlink.mission
+
+import io.kotest.assertions.withClue
+import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.nulls.shouldNotBeNull
+import io.kotest.matchers.shouldBe
+import io.kotest.matchers.types.shouldBeInstanceOf
+import io.kotest.property.Arb
+import io.kotest.property.PropTestConfig
+import io.kotest.property.arbitrary.double
+import io.kotest.property.arbitrary.enum
+import io.kotest.property.arbitrary.int
+import io.kotest.property.arbitrary.long
+import io.kotest.property.checkAll
+import kotlin.random.Random
+
+/** A list of [count] valid items of [type], with varied frames, commands and values. */
+internal fun randomItems(type: MissionType, count: Int, random: Random): List<MissionItem> = List(count) { seq ->
+    val command = when (type) {
+        MissionType.MISSION -> listOf(16, 22, 21, 17, 19, 178, 183).random(random)
+        MissionType.FENCE -> listOf(5000, 5001, 5002, 5003, 5004).random(random)
+        MissionType.RALLY -> 5100
+    }
+    MissionItem(
+        seq = seq,
+        frame = if (type == MissionType.MISSION && command >= 100) MissionItem.FRAME_MISSION else listOf(0, 3, 6, 10).random(random),
+        command = command,
+        current = type == MissionType.MISSION && seq == 0,
+        param1 = random.nextInt(-100, 100).toFloat(),
+        param2 = random.nextFloat(),
+        param3 = random.nextInt(0, 5).toFloat(),
+        param4 = if (random.nextBoolean()) Float.NaN else random.nextFloat() * 360,
+        x = random.nextInt(-900_000_000, 900_000_001),
+        y = random.nextInt(-1_800_000_000, 1_800_000_001),
+        z = random.nextInt(-100, 3000).toFloat(),
+        missionType = type,
+    )
+}
+
+/** Items as a vehicle stores them: none current (the server tracks the current item itself). */
+private fun List<MissionItem>.stored() = map { it.copy(current = false) }
+
+/**
+ * Uploads as the driver does: when the final ACK is missing, a download decides. Returns the
+ * outcome a caller would see: Done, or Failed with a typed error.
+ */
+internal fun VirtualLink.uploadAsDriver(type: MissionType, items: List<MissionItem>, timing: TransferTiming): TransferOutcome<Unit>? {
+    val upload = MissionUpload(type, items, timing)
+    val outcome = run(upload::start, upload::onMessage, { upload.onTimeout() })
+    if (outcome != TransferOutcome.AckMissing) return outcome
+    val download = MissionDownload(type, timing)
+    return when (val check = run(download::start, download::onMessage, download::onTimeout)) {
+        is TransferOutcome.Done -> if (check.value.map { it.copy(current = false) } == items.map { it.copy(current = false) }) {
+            TransferOutcome.Done(Unit)
+        } else {
+            TransferOutcome.Failed(MissionNotConfirmed(type, check.value))
+        }
+        is TransferOutcome.Failed -> check
+        else -> null
+    }
+}
+
+class MissionTransferPropertyTest : StringSpec({
+
+    "random lists over links with up to 30% loss plus duplication and reordering: uploaded and downloaded identical, or a typed failure, never a partial list" {
+        checkAll(
+            PropTestConfig(iterations = 60, seed = 20261122),
+            Arb.enum<MissionType>(), Arb.int(0..1000), Arb.enum<MissionServerFlavor>(),
+            Arb.double(0.0, 0.3, includeNaNs = false), Arb.double(0.0, 0.2, includeNaNs = false), Arb.long(),
+        ) { type, count, flavor, drop, duplicate, seed ->
+            val random = Random(seed)
+            val old = randomItems(type, random.nextInt(0, 20), random)
+            val items = randomItems(type, count, random)
+            val server = MissionServer(flavor, maxItems = 1000).apply { load(type, old) }
+            val faults = Faults(drop = drop, duplicate = duplicate, minDelayMs = 5, maxDelayMs = 60)
+            val link = VirtualLink(server, faults, faults, seed)
+            val timing = TransferTiming()
+
+            val outcome = link.uploadAsDriver(type, items, timing)
+            withClue("upload of $count ${type.name} items, drop $drop, dup $duplicate, ${flavor.name}: must end, not hang") {
+                outcome.shouldNotBeNull()
+            }
+            val held = server.list(type)
+            withClue("the vehicle holds the old list or the new one, never a mix") {
+                (held == old.stored() || held == items.stored()) shouldBe true
+            }
+            when (outcome) {
+                is TransferOutcome.Done -> held shouldBe items.stored()
+                is TransferOutcome.Failed -> outcome.error.shouldBeInstanceOf<MissionException>()
+                else -> Unit
+            }
+
+            val download = MissionDownload(type, timing)
+            val downloaded = link.run(download::start, download::onMessage, download::onTimeout)
+            withClue("download must end") { downloaded.shouldNotBeNull() }
+            if (downloaded is TransferOutcome.Done) {
+                val expected = if (type == MissionType.MISSION) held.mapIndexed { i, it -> it.copy(current = i == server.current) } else held
+                downloaded.value shouldBe expected
+            } else {
+                (downloaded as TransferOutcome.Failed).error.shouldBeInstanceOf<MissionException>()
+            }
+        }
+    }
+
+    "with 10% loss each way, 20 seeded uploads of 200 items into either flavour all succeed" {
+        val failures = ArrayList<String>()
+        for (seed in 1L..20L) {
+            val flavor = if (seed % 2 == 0L) MissionServerFlavor.PX4 else MissionServerFlavor.ARDUPILOT
+            val items = randomItems(MissionType.MISSION, 200, Random(seed))
+            val server = MissionServer(flavor)
+            val faults = Faults(drop = 0.1, minDelayMs = 10, maxDelayMs = 30)
+            val link = VirtualLink(server, faults, faults, seed)
+            val outcome = link.uploadAsDriver(MissionType.MISSION, items, TransferTiming())
+            if (outcome !is TransferOutcome.Done) failures += "seed $seed ${flavor.name}: $outcome"
+        }
+        failures shouldBe emptyList()
+    }
+})

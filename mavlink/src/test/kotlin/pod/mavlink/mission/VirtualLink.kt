@@ -1,0 +1,90 @@
+package pod.mavlink.mission
+
+import java.util.PriorityQueue
+import kotlin.random.Random
+
+/** Faults of a [VirtualLink] direction: probabilities and a delay range in virtual milliseconds. */
+internal data class Faults(val drop: Double = 0.0, val duplicate: Double = 0.0, val minDelayMs: Long = 5, val maxDelayMs: Long = 5)
+
+/**
+ * A ground-station machine and a [MissionServer] joined by a lossy link in virtual time: a
+ * discrete-event loop, so thousands of transfers with loss, duplication and reordering (delay
+ * jitter) run in milliseconds and are reproducible from a seed.
+ */
+internal class VirtualLink(
+    private val server: MissionServer,
+    private val up: Faults,
+    private val down: Faults,
+    seed: Long,
+) {
+    private val random = Random(seed)
+    private var now = 0L // nanoseconds
+    private var order = 0L
+    private class Event(val at: Long, val order: Long, val toVehicle: Boolean, val message: MissionMessage?)
+    private val queue = PriorityQueue<Event>(compareBy<Event>({ it.at }, { it.order }))
+    private var gcsTimerAt = Long.MAX_VALUE
+
+    var messagesSent = 0
+        private set
+    val elapsedMs: Long get() = now / 1_000_000
+
+    /** Runs a ground-station machine to its outcome, or returns null if it is still going after [limitMs] virtual ms. */
+    fun <T> run(
+        start: () -> MissionStep<T>,
+        onMessage: (MissionMessage, Long) -> MissionStep<T>,
+        onTimeout: (Long) -> MissionStep<T>,
+        limitMs: Long = 30 * 60_000,
+    ): TransferOutcome<T>? {
+        queue.clear()
+        gcsTimerAt = Long.MAX_VALUE
+        var step = start()
+        while (true) {
+            apply(step)?.let { return it }
+            val serverAt = server.nextTimeoutAt ?: Long.MAX_VALUE
+            val eventAt = queue.peek()?.at ?: Long.MAX_VALUE
+            val next = minOf(serverAt, eventAt, gcsTimerAt)
+            if (next == Long.MAX_VALUE || next > limitMs * 1_000_000) return null
+            now = next
+            step = when (next) {
+                eventAt -> {
+                    val event = queue.poll()
+                    if (event.toVehicle) {
+                        server.onMessage(event.message!!, now).forEach { send(it, toVehicle = false) }
+                        MissionStep.NOTHING
+                    } else {
+                        onMessage(event.message!!, now)
+                    }
+                }
+                serverAt -> {
+                    server.onTimeout(now).forEach { send(it, toVehicle = false) }
+                    MissionStep.NOTHING
+                }
+                else -> {
+                    gcsTimerAt = Long.MAX_VALUE
+                    onTimeout(now)
+                }
+            }
+        }
+    }
+
+    private fun <T> apply(step: MissionStep<T>): TransferOutcome<T>? {
+        step.send.forEach { send(it, toVehicle = true) }
+        when (step.timerNanos) {
+            MissionStep.KEEP_TIMER -> Unit
+            MissionStep.NO_TIMER -> gcsTimerAt = Long.MAX_VALUE
+            else -> gcsTimerAt = now + step.timerNanos
+        }
+        return step.outcome
+    }
+
+    private fun send(message: MissionMessage, toVehicle: Boolean) {
+        messagesSent++
+        val faults = if (toVehicle) up else down
+        if (random.nextDouble() < faults.drop) return
+        val copies = if (random.nextDouble() < faults.duplicate) 2 else 1
+        repeat(copies) {
+            val delayMs = if (faults.maxDelayMs > faults.minDelayMs) random.nextLong(faults.minDelayMs, faults.maxDelayMs + 1) else faults.minDelayMs
+            queue += Event(now + delayMs * 1_000_000, order++, toVehicle, message)
+        }
+    }
+}
