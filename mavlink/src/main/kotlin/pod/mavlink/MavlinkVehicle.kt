@@ -33,7 +33,7 @@ public class InboundMessage(
  */
 public class MavlinkVehicle internal constructor(
     initial: VehicleIdentity,
-    private val station: GroundStation,
+    internal val station: GroundStation,
 ) {
     private val _identity = MutableStateFlow(initial)
     internal val _connection = MutableStateFlow(ConnectionState.CONNECTED)
@@ -57,6 +57,9 @@ public class MavlinkVehicle internal constructor(
 
     /** Live telemetry. */
     public val telemetry: VehicleTelemetry = VehicleTelemetry()
+
+    /** Upload, download and clear its mission, fence and rally lists. */
+    public val mission: pod.mavlink.mission.MissionService = pod.mavlink.mission.MissionService(this)
 
     /** Every message the vehicle sends (a slow collector loses the oldest beyond 1024 buffered). */
     public val messages: SharedFlow<InboundMessage> = _messages.asSharedFlow()

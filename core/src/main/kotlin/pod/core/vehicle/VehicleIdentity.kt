@@ -54,3 +54,11 @@ public data class VehicleIdentity(
     /** Autopilot firmware. */
     public val autopilot: Autopilot,
 )
+
+/** A vehicle stopped sending heartbeats while something depended on it. */
+public class VehicleLost(
+    /** The vehicle's system id. */
+    public val systemId: Int,
+    /** What was going on when it was lost. */
+    public val during: String,
+) : Exception("vehicle $systemId was lost (no heartbeat) during $during")

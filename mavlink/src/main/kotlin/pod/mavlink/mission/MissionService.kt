@@ -1,0 +1,174 @@
+package pod.mavlink.mission
+
+import kotlinx.coroutines.CancellationException
+import kotlinx.coroutines.CoroutineStart
+import kotlinx.coroutines.NonCancellable
+import kotlinx.coroutines.channels.Channel
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.Flow
+import kotlinx.coroutines.flow.channelFlow
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.selects.onTimeout
+import kotlinx.coroutines.selects.select
+import kotlinx.coroutines.sync.Mutex
+import kotlinx.coroutines.sync.withLock
+import kotlinx.coroutines.withContext
+import pod.core.vehicle.Autopilot
+import pod.core.vehicle.ConnectionState
+import pod.core.vehicle.VehicleLost
+import pod.mavlink.MavlinkVehicle
+import pod.mavlink.MessageTargets
+import kotlin.time.Duration.Companion.nanoseconds
+import kotlin.time.TimeSource
+
+/**
+ * Mission, fence and rally lists of one vehicle: upload, download, clear, set the current item.
+ *
+ * One transfer at a time per vehicle (callers queue). Each operation suspends until it is done and
+ * throws a [MissionException] ([MissionRejected], [MissionTimeout], [InvalidMission],
+ * [MissionNotConfirmed]) or [VehicleLost] otherwise; cancelling an upload or download tells the
+ * vehicle with MISSION_ACK OPERATION_CANCELLED.
+ */
+public class MissionService internal constructor(
+    private val vehicle: MavlinkVehicle,
+    /** Timeouts and retries of every transfer of this vehicle. */
+    public var timing: TransferTiming = TransferTiming(),
+) {
+    private val exclusive = Mutex()
+
+    /**
+     * Uploads [items] as the vehicle's [type] list, reporting progress to [onProgress]. When the
+     * vehicle's final acknowledgement never arrives, downloads the list back and succeeds only if
+     * the vehicle holds what was sent (ArduPilot's item 0, home, excepted).
+     */
+    public suspend fun upload(
+        items: List<MissionItem>,
+        type: MissionType = MissionType.MISSION,
+        onProgress: (TransferProgress) -> Unit = {},
+    ) {
+        MissionValidation.check(type, items)
+        exclusive.withLock {
+            val machine = MissionUpload(type, items, timing)
+            val outcome = drive(type, cancellable = true, { machine.start() }, machine::onMessage, { machine.onTimeout() }) {
+                onProgress(machine.progress)
+            }
+            if (outcome is TransferOutcome.AckMissing) {
+                val onBoard = downloadLocked(type) {}
+                if (!sameList(type, onBoard, items)) throw MissionNotConfirmed(type, onBoard)
+            }
+            onProgress(TransferProgress(items.size, items.size))
+        }
+    }
+
+    /** [upload] as a flow of progress: collecting it runs the upload; it completes when the vehicle holds the list. */
+    public fun uploading(items: List<MissionItem>, type: MissionType = MissionType.MISSION): Flow<TransferProgress> =
+        channelFlow { upload(items, type) { trySend(it) } }
+
+    /** Downloads the vehicle's [type] list. */
+    public suspend fun download(type: MissionType = MissionType.MISSION, onProgress: (TransferProgress) -> Unit = {}): List<MissionItem> =
+        exclusive.withLock { downloadLocked(type, onProgress) }
+
+    /** [download] as a flow of progress; the list itself comes from [download]. */
+    public fun downloading(type: MissionType = MissionType.MISSION): Flow<TransferProgress> =
+        channelFlow { download(type) { trySend(it) } }
+
+    /** Deletes the vehicle's [type] list. */
+    public suspend fun clear(type: MissionType = MissionType.MISSION) {
+        exclusive.withLock {
+            val machine = MissionCommand.clear(type, timing)
+            drive(type, cancellable = false, machine::start, machine::onMessage, { machine.onTimeout() }) {}
+        }
+    }
+
+    /** Makes item [seq] of the mission the one the vehicle flies next. */
+    public suspend fun setCurrent(seq: Int) {
+        require(seq >= 0) { "seq must be ≥ 0, was $seq" }
+        exclusive.withLock {
+            val machine = MissionCommand.setCurrent(seq, timing)
+            drive(MissionType.MISSION, cancellable = false, machine::start, machine::onMessage, { machine.onTimeout() }) {}
+        }
+    }
+
+    private suspend fun downloadLocked(type: MissionType, onProgress: (TransferProgress) -> Unit): List<MissionItem> {
+        val machine = MissionDownload(type, timing)
+        val outcome = drive(type, cancellable = true, { machine.start() }, machine::onMessage, machine::onTimeout) { onProgress(machine.progress) }
+        @Suppress("UNCHECKED_CAST")
+        return (outcome as TransferOutcome.Done<List<MissionItem>>).value
+    }
+
+    private fun sameList(type: MissionType, onBoard: List<MissionItem>, sent: List<MissionItem>): Boolean {
+        if (onBoard.size != sent.size) return false
+        // ArduPilot keeps home in item 0 of a mission, whatever was sent there.
+        val skip = if (type == MissionType.MISSION && vehicle.identity.value.autopilot == Autopilot.ARDUPILOT) 1 else 0
+        return onBoard.drop(skip).map { it.copy(current = false) } == sent.drop(skip).map { it.copy(current = false) }
+    }
+
+    /**
+     * Runs one protocol machine against the vehicle: sends what it says, arms its timer, feeds it
+     * the vehicle's mission messages, until it reports an outcome. Returns Done or AckMissing;
+     * throws the error of Failed.
+     */
+    private suspend fun <T> drive(
+        type: MissionType,
+        cancellable: Boolean,
+        start: (Long) -> MissionStep<T>,
+        onMessage: (MissionMessage, Long) -> MissionStep<T>,
+        onTimeout: (Long) -> MissionStep<T>,
+        afterEachStep: () -> Unit,
+    ): TransferOutcome<T> = coroutineScope {
+        val clock = TimeSource.Monotonic.markNow()
+        fun now() = clock.elapsedNow().inWholeNanoseconds
+        val identity = vehicle.identity.value
+        val ourSystem = vehicle.station.config.systemId
+        val inbox = Channel<MissionMessage>(Channel.UNLIMITED)
+        val listening = launch(start = CoroutineStart.UNDISPATCHED) {
+            vehicle.messages.collect { inbound ->
+                val message = inbound.message ?: return@collect
+                if (inbound.frame.componentId != identity.componentId) return@collect
+                val target = MessageTargets.targetSystem(message)
+                if (target != null && target != 0 && target != ourSystem) return@collect // another ground station's exchange
+                MissionWire.decode(message)?.let { inbox.trySend(it) }
+            }
+        }
+        val lost = launch(start = CoroutineStart.UNDISPATCHED) {
+            vehicle.connection.first { it == ConnectionState.LOST }
+            inbox.close(VehicleLost(identity.systemId, "a ${type.name.lowercase()} transfer"))
+        }
+        var deadline = Long.MAX_VALUE
+        var step = start(now())
+        try {
+            while (true) {
+                for (message in step.send) vehicle.send(MissionWire.encode(message, identity.systemId, identity.componentId))
+                when (step.timerNanos) {
+                    MissionStep.KEEP_TIMER -> Unit
+                    MissionStep.NO_TIMER -> deadline = Long.MAX_VALUE
+                    else -> deadline = now() + step.timerNanos
+                }
+                afterEachStep()
+                when (val outcome = step.outcome) {
+                    null -> Unit
+                    is TransferOutcome.Failed -> throw outcome.error
+                    else -> return@coroutineScope outcome
+                }
+                val wait = deadline - now()
+                step = select {
+                    inbox.onReceive { onMessage(it, now()) }
+                    if (deadline != Long.MAX_VALUE) onTimeout(wait.coerceAtLeast(0).nanoseconds) { onTimeout(now()) }
+                }
+            }
+            @Suppress("UNREACHABLE_CODE")
+            error("unreachable")
+        } catch (e: CancellationException) {
+            if (cancellable) {
+                withContext(NonCancellable) {
+                    vehicle.send(MissionWire.encode(MissionMessage.Ack(type, MissionResult.OPERATION_CANCELLED), identity.systemId, identity.componentId))
+                }
+            }
+            throw e
+        } finally {
+            listening.cancel()
+            lost.cancel()
+        }
+    }
+}
