@@ -21,14 +21,23 @@ import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
 import kotlinx.coroutines.job
 import kotlinx.coroutines.launch
+import pod.mavlink.MessageTargets
 import pod.mavlink.SequenceNumbers
+import pod.mavlink.codec.MavFrame
+import pod.mavlink.mission.MissionItem
+import pod.mavlink.mission.MissionMessage
+import pod.mavlink.mission.MissionServer
+import pod.mavlink.mission.MissionServerFlavor
+import pod.mavlink.mission.MissionWire
 import pod.mavlink.codec.FrameDecoder
 import pod.mavlink.codec.FrameEncoder
 import pod.mavlink.codec.MessageCodec
 import pod.mavlink.link.MavlinkLink
 import pod.mavlink.telemetry.FlightModes
 import kotlin.time.Duration
+import kotlin.math.roundToLong
 import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.nanoseconds
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
 
@@ -62,6 +71,16 @@ public class SimVehicle(
     private val bootedAt = TimeSource.Monotonic.markNow()
     private val messages = SimMessages(config, bootedAt)
     private var scope: CoroutineScope? = null
+    private var missionTimer: Job? = null
+    private var missionPeer: Pair<Int, Int>? = null
+
+    /**
+     * The vehicle side of the mission protocol: missions, fences and rally points, with the
+     * behaviour of the configured autopilot. Its lists survive [stop] and [start], like storage.
+     */
+    public val missionServer: MissionServer = MissionServer(
+        if (config.autopilot == pod.core.vehicle.Autopilot.PX4) MissionServerFlavor.PX4 else MissionServerFlavor.ARDUPILOT,
+    )
     private var link: MavlinkLink? = null
 
     /** The simulated physical state, updated at 20 Hz while running. */
@@ -128,15 +147,21 @@ public class SimVehicle(
     private suspend fun receive(link: MavlinkLink) = coroutineScope {
         val decoder = FrameDecoder(codec)
         // The link hands bytes over synchronously; replies need to suspend, so they go through an inbox.
-        val inbox = Channel<Any>(capacity = 256, onBufferOverflow = BufferOverflow.DROP_OLDEST)
-        launch { for (message in inbox) handle(message) }
+        val inbox = Channel<Pair<MavFrame, Any>>(capacity = 1024, onBufferOverflow = BufferOverflow.DROP_OLDEST)
+        launch { for ((frame, message) in inbox) handle(frame, message) }
         link.receive { _, bytes ->
-            decoder.feed(bytes) { frame -> codec.decode(frame)?.let { inbox.trySend(it) } }
+            decoder.feed(bytes) { frame -> codec.decode(frame)?.let { inbox.trySend(frame to it) } }
         }
         inbox.close()
     }
 
-    internal suspend fun handle(message: Any) {
+    internal suspend fun handle(frame: MavFrame, message: Any) {
+        val target = MessageTargets.targetSystem(message)
+        val mission = MissionWire.decode(message)
+        if (mission != null && (target == null || target == 0 || target == config.systemId)) {
+            serveMission(frame, mission)
+            return
+        }
         if (message is CommandLong && addressedToUs(message.targetSystem(), message.targetComponent())) {
             val result = when (message.command().value()) {
                 MAV_CMD_SET_MESSAGE_INTERVAL -> setInterval(message.param1().toInt(), message.param2())
@@ -163,6 +188,38 @@ public class SimVehicle(
         scope?.let { restartStream(it, messageId, hz) }
         return MavResult.MAV_RESULT_ACCEPTED
     }
+
+    /** Hands a mission-protocol message to the mission server and sends its replies to the asker. */
+    private suspend fun serveMission(frame: MavFrame, message: MissionMessage) {
+        missionServer.home = homeItem()
+        val replies = missionServer.onMessage(message, clockNanos())
+        for (reply in replies) send(MissionWire.encode(reply, frame.systemId, frame.componentId))
+        missionPeer = frame.systemId to frame.componentId
+        scheduleMissionTimer()
+    }
+
+    private fun scheduleMissionTimer() {
+        missionTimer?.cancel()
+        val at = missionServer.nextTimeoutAt ?: return
+        val scope = scope ?: return
+        missionTimer = scope.launch {
+            delay((at - clockNanos()).coerceAtLeast(0).nanoseconds)
+            val (system, component) = missionPeer ?: return@launch
+            val replies = missionServer.onTimeout(clockNanos())
+            for (reply in replies) send(MissionWire.encode(reply, system, component))
+            scheduleMissionTimer()
+        }
+    }
+
+    private fun homeItem(): MissionItem = config.home.let { home ->
+        MissionItem(
+            seq = 0, frame = 0, command = 16,
+            x = (home.latitude * 1e7).roundToLong().toInt(), y = (home.longitude * 1e7).roundToLong().toInt(),
+            z = home.altitude.meters.toFloat(),
+        )
+    }
+
+    private fun clockNanos(): Long = bootedAt.elapsedNow().inWholeNanoseconds
 
     private fun addressedToUs(system: Int, component: Int): Boolean =
         (system == 0 || system == config.systemId) && (component == 0 || component == config.componentId)

@@ -1,0 +1,123 @@
+package pod.e2e
+
+import io.kotest.assertions.throwables.shouldThrow
+import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.collections.shouldBeEmpty
+import io.kotest.matchers.shouldBe
+import io.kotest.matchers.string.shouldContain
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.flow.toList
+import kotlinx.coroutines.withTimeout
+import pod.core.vehicle.Autopilot
+import pod.mavlink.GroundStation
+import pod.mavlink.MavlinkVehicle
+import pod.mavlink.mission.InvalidMission
+import pod.mavlink.mission.MissionItem
+import pod.mavlink.mission.MissionRejected
+import pod.mavlink.mission.MissionResult
+import pod.mavlink.mission.MissionType
+import pod.sim.SimVehicle
+import pod.sim.SimVehicleConfig
+import kotlin.time.Duration.Companion.seconds
+
+/** [count] waypoints in a line north of Porto at 30 m above home, item 0 current. */
+internal fun waypoints(count: Int, type: MissionType = MissionType.MISSION): List<MissionItem> = List(count) { i ->
+    MissionItem(
+        seq = i,
+        frame = 3,
+        command = when (type) {
+            MissionType.MISSION -> 16
+            MissionType.FENCE -> 5001
+            MissionType.RALLY -> 5100
+        },
+        current = type == MissionType.MISSION && i == 0,
+        param1 = if (type == MissionType.FENCE) count.toFloat() else 0f,
+        x = 411_780_460 + 1000 * i,
+        y = -85_957_860,
+        z = 30f,
+        missionType = type,
+    )
+}
+
+/** Runs [block] with a ground station and one simulated vehicle of [autopilot] connected to it. */
+private suspend fun withVehicle(autopilot: Autopilot, block: suspend (MavlinkVehicle, SimVehicle) -> Unit) = coroutineScope {
+    val gcs = GroundStation.open("udpin://127.0.0.1:0", this)
+    val sim = SimVehicle(SimVehicleConfig(systemId = 5, autopilot = autopilot, gcs = "udpout://127.0.0.1:${gcs.link.localPort}"))
+    try {
+        sim.start(this)
+        val vehicle = withTimeout(10.seconds) { gcs.vehicles.first { 5 in it } }.getValue(5)
+        withTimeout(60.seconds) { block(vehicle, sim) }
+    } finally {
+        sim.stop()
+        gcs.close()
+    }
+}
+
+class MissionTransferSpec : StringSpec({
+
+    for (autopilot in listOf(Autopilot.ARDUPILOT, Autopilot.PX4)) {
+        "a 300-item mission uploads into a simulated ${autopilot.name} vehicle and downloads back identical" {
+            withVehicle(autopilot) { vehicle, sim ->
+                val items = waypoints(300)
+                val progress = vehicle.mission.uploading(items).toList()
+                progress.last().done shouldBe 300
+                progress.map { it.done } shouldBe progress.map { it.done }.sorted()
+                val back = vehicle.mission.download()
+                val expected = if (autopilot == Autopilot.ARDUPILOT) {
+                    // ArduPilot keeps home in item 0.
+                    listOf(sim.missionServer.home!!.copy(current = true)) + items.drop(1).map { it.copy(current = false) }
+                } else {
+                    items
+                }
+                back shouldBe expected
+                sim.missionServer.list(MissionType.MISSION).size shouldBe 300
+            }
+        }
+    }
+
+    "fence and rally lists are kept apart from the mission, and clear empties only its own list" {
+        withVehicle(Autopilot.ARDUPILOT) { vehicle, sim ->
+            vehicle.mission.upload(waypoints(5))
+            vehicle.mission.upload(waypoints(4, MissionType.FENCE), MissionType.FENCE)
+            vehicle.mission.upload(waypoints(3, MissionType.RALLY), MissionType.RALLY)
+            vehicle.mission.download(MissionType.FENCE) shouldBe waypoints(4, MissionType.FENCE)
+            vehicle.mission.download(MissionType.RALLY) shouldBe waypoints(3, MissionType.RALLY)
+            vehicle.mission.clear(MissionType.FENCE)
+            vehicle.mission.download(MissionType.FENCE).shouldBeEmpty()
+            vehicle.mission.download(MissionType.RALLY).size shouldBe 3
+            vehicle.mission.download().size shouldBe 5
+            sim.missionServer.list(MissionType.FENCE).shouldBeEmpty()
+        }
+    }
+
+    "set-current moves the vehicle's current item" {
+        withVehicle(Autopilot.PX4) { vehicle, sim ->
+            vehicle.mission.upload(waypoints(10))
+            vehicle.mission.setCurrent(7)
+            sim.missionServer.current shouldBe 7
+            vehicle.mission.download().single { it.current }.seq shouldBe 7
+        }
+    }
+
+    "an item the vehicle refuses fails the upload with its result, and the old mission stays whole" {
+        withVehicle(Autopilot.ARDUPILOT) { vehicle, sim ->
+            vehicle.mission.upload(waypoints(6))
+            val before = sim.missionServer.list(MissionType.MISSION)
+            // Pod lets NaN params through (many commands use NaN for "unchanged"); this vehicle refuses it in param1.
+            val bad = waypoints(8).toMutableList().also { it[4] = it[4].copy(param1 = Float.NaN) }
+            val error = shouldThrow<MissionRejected> { vehicle.mission.upload(bad) }
+            error.result shouldBe MissionResult.INVALID_PARAM1
+            error.seq shouldBe 4
+            sim.missionServer.list(MissionType.MISSION) shouldBe before
+        }
+    }
+
+    "a list that cannot be valid is refused before anything is sent, naming the item" {
+        withVehicle(Autopilot.PX4) { vehicle, _ ->
+            val items = waypoints(5).toMutableList().also { it[3] = it[3].copy(x = 950_000_000) }
+            shouldThrow<InvalidMission> { vehicle.mission.upload(items) }.message!! shouldContain "invalid mission item 3: latitude must be in -90..90, was 95.0"
+            shouldThrow<InvalidMission> { vehicle.mission.upload(waypoints(3, MissionType.RALLY)) }.message!! shouldContain "belongs to the rally list"
+        }
+    }
+})
