@@ -1,0 +1,96 @@
+package pod.e2e
+
+import com.github.ajalt.clikt.core.CliktError
+import com.github.ajalt.clikt.core.parse
+import io.kotest.assertions.throwables.shouldThrow
+import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.collections.shouldBeEmpty
+import io.kotest.matchers.shouldBe
+import io.kotest.matchers.string.shouldContain
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.withContext
+import pod.cli.Output
+import pod.cli.Pod
+import pod.core.vehicle.Autopilot
+import pod.mavlink.mission.MissionType
+import pod.mavlink.mission.WplFile
+import pod.sim.SimVehicle
+import pod.sim.SimVehicleConfig
+import java.net.DatagramSocket
+import java.net.InetAddress
+import java.nio.file.Files
+import java.util.concurrent.CopyOnWriteArrayList
+import kotlin.io.path.writeText
+
+private class Lines : Output {
+    val lines = CopyOnWriteArrayList<String>()
+    override fun line(text: String) {
+        lines += text
+    }
+}
+
+/** A UDP port free right now on 127.0.0.1 (the CLI binds it a moment later). */
+private fun freePort(): Int = DatagramSocket(0, InetAddress.getByName("127.0.0.1")).use { it.localPort }
+
+class MissionCliSpec : StringSpec({
+
+    "pod mission upload, download and clear a simulated vehicle's list through WPL files" {
+        coroutineScope {
+            val port = freePort()
+            val sim = SimVehicle(SimVehicleConfig(systemId = 12, autopilot = Autopilot.PX4, gcs = "udpout://127.0.0.1:$port"))
+            val dir = Files.createTempDirectory("pod-mission-cli")
+            try {
+                sim.start(this)
+                val items = waypoints(25)
+                val upload = dir.resolve("plan.waypoints").also { WplFile.write(it, items) }
+                val connect = listOf("--connect", "udpin:127.0.0.1:$port", "--json")
+                val out = Lines()
+                withContext(Dispatchers.IO) { Pod(out).parse(listOf("mission", "upload", upload.toString()) + connect) }
+                out.lines.last() shouldContain "\"event\":\"done\""
+                out.lines.last() shouldContain "\"items\":25"
+                out.lines.filter { it.contains("\"event\":\"progress\"") }.last() shouldContain "\"done\":25,\"total\":25"
+                sim.missionServer.list(MissionType.MISSION) shouldBe items.map { it.copy(current = false) }
+
+                val download = dir.resolve("back.waypoints")
+                withContext(Dispatchers.IO) { Pod(Lines()).parse(listOf("mission", "download", download.toString()) + connect) }
+                WplFile.read(download) shouldBe items
+
+                withContext(Dispatchers.IO) { Pod(Lines()).parse(listOf("mission", "clear") + connect) }
+                sim.missionServer.list(MissionType.MISSION).shouldBeEmpty()
+            } finally {
+                sim.stop()
+                dir.toFile().deleteRecursively()
+            }
+        }
+    }
+
+    "a malformed WPL file fails with its line number and exit code 1, before any vehicle is asked" {
+        coroutineScope {
+            val port = freePort()
+            val sim = SimVehicle(SimVehicleConfig(systemId = 13, gcs = "udpout://127.0.0.1:$port"))
+            val file = Files.createTempFile("pod-bad", ".waypoints")
+            try {
+                sim.start(this)
+                file.writeText("QGC WPL 110\n0\t1\t0\t16\t0\t0\t0\t0\t41.1\t-8.6\t100\t1\n1\t0\t3\t16\t0\t0\t0\t0\tnorth\t-8.6\t30\t1\n")
+                val error = shouldThrow<CliktError> {
+                    withContext(Dispatchers.IO) { Pod(Lines()).parse(listOf("mission", "upload", file.toString(), "--connect", "udpin:127.0.0.1:$port")) }
+                }
+                error.statusCode shouldBe 1
+                error.message!! shouldContain "line 3"
+                sim.missionServer.list(MissionType.MISSION).shouldBeEmpty()
+            } finally {
+                sim.stop()
+                Files.deleteIfExists(file)
+            }
+        }
+    }
+
+    "no vehicle on the link is a clear error" {
+        val error = shouldThrow<CliktError> {
+            withContext(Dispatchers.IO) { Pod(Lines()).parse(listOf("mission", "clear", "--connect", "udpin:127.0.0.1:${freePort()}", "--wait", "1s")) }
+        }
+        error.statusCode shouldBe 1
+        error.message!! shouldContain "no vehicle heard within 1s"
+    }
+})
