@@ -29,6 +29,7 @@ internal class MissionDownload(
     private var answeredSinceResize = 0
     private var timeoutsInARow = 0
     private var sequentialRetry = false
+    private var restarts = 0
     private var lowestMissing = 0
 
     val progress: TransferProgress get() = TransferProgress(receivedCount, received.size)
@@ -109,8 +110,8 @@ internal class MissionDownload(
     }
 
     private fun onError(result: MissionResult): MissionStep<List<MissionItem>> {
-        if (phase == Phase.RECEIVING && !sequentialRetry) {
-            // A vehicle that serves requests only in order: start over, one item at a time.
+        if (phase == Phase.RECEIVING && restarts++ < timing.retries) {
+            // A vehicle that serves requests only in order (or lost track): start over, one item at a time.
             sequentialRetry = true
             window = 1
             phase = Phase.LISTING

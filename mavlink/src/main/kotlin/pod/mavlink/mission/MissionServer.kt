@@ -17,7 +17,8 @@ public enum class MissionServerFlavor {
     /**
      * Requests with MISSION_REQUEST_INT, ignores unexpected items, re-requests after 250 ms and
      * gives up silently after 5 s, keeps item 0, acknowledges a repeated last item again, ignores
-     * partial writes.
+     * partial writes, and serves downloads strictly in order (an out-of-turn request ends the
+     * download with ERROR).
      */
     PX4,
 }
@@ -28,7 +29,8 @@ public enum class MissionServerFlavor {
  * call [onTimeout] when [nextTimeoutAt] passes.
  *
  * Unlike ArduPilot, a list is replaced only when its transfer completes: a failed or cancelled
- * upload leaves the old list whole. Downloads are stateless (any request, any order).
+ * upload leaves the old list whole. ArduPilot-flavoured downloads are stateless (any request, any
+ * order); PX4-flavoured ones strictly sequential.
  */
 public class MissionServer(
     /** Where the behaviour follows ArduPilot or PX4. */
@@ -43,6 +45,7 @@ public class MissionServer(
     private val lists = HashMap<MissionType, List<MissionItem>>()
     private var upload: Upload? = null
     private var completed: Pair<MissionType, Int>? = null // type and last seq of the latest completed upload
+    private var sending: Pair<MissionType, Int>? = null // PX4: the list being downloaded and the next seq it expects
 
     private class Upload(val type: MissionType, val base: List<MissionItem>, val start: Int, val end: Int, var expected: Int, var lastActivity: Long) {
         val buffer = base.toMutableList()
@@ -72,7 +75,12 @@ public class MissionServer(
         is MissionMessage.Count -> onCount(message.type, message.count, now)
         is MissionMessage.WritePartial -> onWritePartial(message, now)
         is MissionMessage.Item -> onItem(message.item, now)
-        is MissionMessage.RequestList -> if (busy(message.type)) deny(message.type) else listOf(MissionMessage.Count(message.type, list(message.type).size))
+        is MissionMessage.RequestList -> if (busy(message.type)) {
+            deny(message.type)
+        } else {
+            if (flavor == MissionServerFlavor.PX4) sending = message.type to 0
+            listOf(MissionMessage.Count(message.type, list(message.type).size))
+        }
         is MissionMessage.Request -> onRequest(message)
         is MissionMessage.ClearAll -> if (busy(message.type)) deny(message.type) else {
             lists.remove(message.type)
@@ -84,6 +92,7 @@ public class MissionServer(
             listOf(MissionMessage.Current(current, list(MissionType.MISSION).size))
         }
         is MissionMessage.Ack -> {
+            if (sending?.first == message.type) sending = null
             val up = upload
             if (up != null && message.type == up.type && message.result == MissionResult.OPERATION_CANCELLED) idle()
             emptyList()
@@ -171,6 +180,20 @@ public class MissionServer(
 
     private fun onRequest(request: MissionMessage.Request): List<MissionMessage> {
         if (busy(request.type)) return deny(request.type)
+        if (flavor == MissionServerFlavor.PX4) {
+            // PX4 serves a download strictly in order: the expected item or a repeat of the last
+            // one; anything else ends the transfer with ERROR, and requests while idle are ignored.
+            val (type, next) = sending ?: return emptyList()
+            if (type != request.type) return emptyList()
+            when (request.seq) {
+                next -> sending = type to next + 1
+                next - 1 -> Unit
+                else -> {
+                    sending = null
+                    return listOf(MissionMessage.Ack(type, MissionResult.ERROR))
+                }
+            }
+        }
         val items = list(request.type)
         if (request.seq !in items.indices) return listOf(MissionMessage.Ack(request.type, MissionResult.INVALID_SEQUENCE))
         val item = items[request.seq]
