@@ -10,12 +10,15 @@ import kotlin.time.Duration.Companion.nanoseconds
  * flight, and on a timeout only the requests still unanswered are repeated. The window grows by one
  * after each window's worth of answers and halves when more than half of it timed out, so a
  * vehicle that drops bursts is soon asked one item at a time. A vehicle that only serves requests
- * in order (PX4 ends the transfer with MISSION_ACK ERROR when asked out of turn) is asked again from
- * the start, one item at a time. Ends by sending MISSION_ACK ACCEPTED.
+ * in order ([inOrder]: PX4 ends the transfer with MISSION_ACK ERROR when asked out of turn) is asked
+ * one item at a time, and from the start again when it drops the transfer. Ends by sending
+ * MISSION_ACK ACCEPTED.
  */
 internal class MissionDownload(
     private val type: MissionType,
     private val timing: TransferTiming,
+    /** The vehicle serves downloads only in order and drops the transfer otherwise (PX4). */
+    private val inOrder: Boolean = false,
 ) {
     private enum class Phase { LISTING, RECEIVING, ENDED }
 
@@ -28,8 +31,10 @@ internal class MissionDownload(
     private var window = timing.window
     private var answeredSinceResize = 0
     private var timeoutsInARow = 0
-    private var sequentialRetry = false
+    private var sequentialRetry = inOrder
     private var restarts = 0
+    private var cursor = 0 // one-at-a-time mode: the next seq to walk through, had or not
+    private val strict = inOrder // restarted walks start at item 0
     private var lowestMissing = 0
 
     val progress: TransferProgress get() = TransferProgress(receivedCount, received.size)
@@ -41,7 +46,7 @@ internal class MissionDownload(
         return when (message) {
             is MissionMessage.Count -> if (message.type == type && phase == Phase.LISTING) onCount(message.count, now) else MissionStep.NOTHING
             is MissionMessage.Item -> if (message.item.missionType == type && phase == Phase.RECEIVING) onItem(message.item, now) else MissionStep.NOTHING
-            is MissionMessage.Ack -> if (message.type == type && message.result != MissionResult.ACCEPTED) onError(message.result) else MissionStep.NOTHING
+            is MissionMessage.Ack -> if (message.type == type) onAck(message.result) else MissionStep.NOTHING
             else -> MissionStep.NOTHING
         }
     }
@@ -55,6 +60,17 @@ internal class MissionDownload(
         }
         rtt.backOff()
         if (phase == Phase.LISTING) return MissionStep(listOf(MissionMessage.RequestList(type)), rtt.timeoutNanos)
+        // A vehicle that stopped answering mid-download may have dropped the transfer (PX4 does after
+        // an out-of-turn request whose ERROR we never saw): start it over, one item at a time.
+        // Long silence from an in-order vehicle: it has probably dropped the transfer (after an ERROR
+        // we never saw); only a new MISSION_REQUEST_LIST revives it. Stateless vehicles never do.
+        if (inOrder && timeoutsInARow == timing.retries / 2 && restarts < MAX_RESTARTS) return restart()
+        if (sequentialRetry) {
+            if (cursor >= received.size) return MissionStep(timerNanos = rtt.timeoutNanos)
+            requestedAt[cursor] = RETRANSMITTED
+            inFlight = 1
+            return MissionStep(listOf(MissionMessage.Request(type, cursor)), rtt.timeoutNanos)
+        }
         // Everything in flight is overdue (the timer runs for the oldest request). Shrink the window
         // when most of it was lost, then ask again for what is missing, in order.
         if (inFlight * 2 > window) window = (window / 2).coerceAtLeast(1)
@@ -92,7 +108,17 @@ internal class MissionDownload(
 
     private fun onItem(item: MissionItem, now: Long): MissionStep<List<MissionItem>> {
         val seq = item.seq
-        if (seq !in received.indices || received[seq] != null) return MissionStep.NOTHING // duplicate or nonsense
+        if (seq !in received.indices) return MissionStep.NOTHING
+        if (sequentialRetry && seq == cursor) {
+            cursor++
+            if (requestedAt[seq] > 0L) rtt.sample(now - requestedAt[seq])
+            if (requestedAt[seq] != 0L) inFlight--
+            requestedAt[seq] = 0L
+            timeoutsInARow = 0
+            if (received[seq] != null) return MissionStep(fill(now), rtt.timeoutNanos)
+        } else if (received[seq] != null) {
+            return MissionStep.NOTHING // a duplicate
+        }
         if (requestedAt[seq] > 0L) rtt.sample(now - requestedAt[seq])
         if (requestedAt[seq] != 0L) inFlight--
         requestedAt[seq] = 0L
@@ -109,25 +135,51 @@ internal class MissionDownload(
         return MissionStep(fill(now), rtt.timeoutNanos)
     }
 
+    /**
+     * Error answers are ambiguous: a vehicle answers stray items of an earlier upload with ERROR,
+     * and ArduPilot answers an out-of-range request with INVALID_SEQUENCE. Only an in-order vehicle's
+     * ERROR mid-download means this transfer ended; DENIED (busy with another upload) always counts.
+     */
+    private fun onAck(result: MissionResult): MissionStep<List<MissionItem>> = when {
+        result == MissionResult.ACCEPTED -> MissionStep.NOTHING
+        result == MissionResult.DENIED -> end(TransferOutcome.Failed(MissionRejected(type, result, null, "download")))
+        inOrder && phase == Phase.RECEIVING -> onError(result)
+        else -> MissionStep.NOTHING
+    }
+
     private fun onError(result: MissionResult): MissionStep<List<MissionItem>> {
-        if (phase == Phase.RECEIVING && restarts++ < timing.retries) {
+        if (phase == Phase.RECEIVING && restarts < MAX_RESTARTS) {
             // A vehicle that serves requests only in order (or lost track): start over, one item at a time.
-            sequentialRetry = true
-            window = 1
-            phase = Phase.LISTING
-            received = emptyArray()
-            requestedAt = LongArray(0)
-            inFlight = 0
-            receivedCount = 0
-            lowestMissing = 0
-            return MissionStep(listOf(MissionMessage.RequestList(type)), rtt.timeoutNanos)
+            return restart()
         }
         return end(TransferOutcome.Failed(MissionRejected(type, result, received.indexOfFirst { it == null }.takeIf { it >= 0 }, "download")))
     }
 
+    /**
+     * Starts over one item at a time, keeping what arrived. Once the vehicle has refused a request
+     * out of turn, the walk goes from item 0 again, items already held included, because a vehicle
+     * that serves in order (PX4) accepts nothing else; otherwise it resumes at the first gap.
+     */
+    private fun restart(): MissionStep<List<MissionItem>> {
+        restarts++
+        sequentialRetry = true
+        window = 1
+        phase = Phase.LISTING
+        requestedAt.fill(0L)
+        inFlight = 0
+        cursor = if (strict) 0 else lowestMissing
+        return MissionStep(listOf(MissionMessage.RequestList(type)), rtt.timeoutNanos)
+    }
+
     /** Requests for missing items not in flight, lowest first, until the window is full. */
     private fun fill(now: Long): List<MissionMessage> {
-        val max = if (sequentialRetry) 1 else window
+        if (sequentialRetry) {
+            if (inFlight > 0 || cursor >= received.size) return emptyList()
+            requestedAt[cursor] = now.coerceAtLeast(1L)
+            inFlight = 1
+            return listOf(MissionMessage.Request(type, cursor))
+        }
+        val max = window
         val requests = ArrayList<MissionMessage>()
         var seq = lowestMissing
         while (inFlight < max && seq < received.size) {
@@ -155,5 +207,12 @@ internal class MissionDownload(
 
     private companion object {
         const val RETRANSMITTED = -1L
+
+        /**
+         * Start-overs allowed. A vehicle that serves only in order, behind a link that reorders,
+         * loses track again and again (PX4 over such a link does); better a typed failure than an
+         * endless walk.
+         */
+        const val MAX_RESTARTS = 4
     }
 }

@@ -91,7 +91,7 @@ public class MissionService internal constructor(
     }
 
     private suspend fun downloadLocked(type: MissionType, onProgress: (TransferProgress) -> Unit): List<MissionItem> {
-        val machine = MissionDownload(type, timing)
+        val machine = MissionDownload(type, timing, inOrder = vehicle.identity.value.autopilot == Autopilot.PX4)
         val outcome = drive(type, cancellable = true, { machine.start() }, machine::onMessage, machine::onTimeout) { onProgress(machine.progress) }
         @Suppress("UNCHECKED_CAST")
         return (outcome as TransferOutcome.Done<List<MissionItem>>).value

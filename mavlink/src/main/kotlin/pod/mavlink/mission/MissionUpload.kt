@@ -30,6 +30,8 @@ internal class MissionUpload(
     private var timeoutsInARow = 0
     private var lastItemSent = false
     private var errorsAfterLastItem = 0
+    private var staleSeq = -1 // a request older than the newest, seen once: a late duplicate, or a restart?
+    private var pendingError: MissionResult? = null
 
     private var accepted = false
 
@@ -51,6 +53,10 @@ internal class MissionUpload(
     fun onTimeout(): MissionStep<Unit> {
         if (phase == Phase.ENDED) return MissionStep.NOTHING
         timeoutsInARow++
+        pendingError?.let { error ->
+            // An error answer followed by silence: the vehicle meant it.
+            if (timeoutsInARow >= 2) return end(TransferOutcome.Failed(MissionRejected(type, error, newest.takeIf { it >= 0 }, "upload")))
+        }
         if (timeoutsInARow > timing.retries) {
             val waited = rtt.timeoutNanos.nanoseconds
             return end(
@@ -77,8 +83,26 @@ internal class MissionUpload(
     }
 
     private fun onRequest(seq: Int, now: Long): MissionStep<Unit> {
-        if (seq !in items.indices || seq < newest) return MissionStep.NOTHING // out of range, or stale
+        if (seq !in items.indices) return MissionStep.NOTHING
+        if (seq < newest) {
+            // The vehicle is alive and in the upload, whatever it asks.
+            timeoutsInARow = 0
+            // Once: a late duplicate, answered (cheap, harmless). Twice, or item 0: the vehicle
+            // restarted the transfer there (ArduPilot does on a duplicated MISSION_COUNT), so
+            // follow it back.
+            if (seq != staleSeq && seq != 0) {
+                staleSeq = seq
+                return MissionStep(listOf(item(seq)))
+            }
+            newest = seq
+            staleSeq = -1
+            timeoutsInARow = 0
+            phase = Phase.SENDING
+            return MissionStep(listOf(item(seq)), rtt.timeoutNanos)
+        }
         if (seq > newest) {
+            pendingError = null
+            staleSeq = -1
             // Karn: only a request answering an item sent once measures the round trip.
             if (newest >= 0 && seq == newest + 1 && firstSentAt[newest] >= 0) rtt.sample(now - firstSentAt[newest])
             rtt.progressed()
@@ -109,6 +133,12 @@ internal class MissionUpload(
         } else {
             phase = Phase.AWAITING_ACK
             MissionStep(listOf(item(items.size - 1)))
+        }
+        // PX4 answers a duplicated MISSION_COUNT with ERROR ("busy") and carries on: an ERROR only
+        // counts if the vehicle then falls silent (see onTimeout).
+        result == MissionResult.ERROR && phase != Phase.COUNTING -> {
+            pendingError = result
+            MissionStep.NOTHING
         }
         else -> end(TransferOutcome.Failed(MissionRejected(type, result, newest.takeIf { it >= 0 }, "upload")))
     }

@@ -44,11 +44,11 @@ private fun List<MissionItem>.stored() = map { it.copy(current = false) }
  * Uploads as the driver does: when the final ACK is missing, a download decides. Returns the
  * outcome a caller would see: Done, or Failed with a typed error.
  */
-internal fun VirtualLink.uploadAsDriver(type: MissionType, items: List<MissionItem>, timing: TransferTiming): TransferOutcome<Unit>? {
+internal fun VirtualLink.uploadAsDriver(type: MissionType, items: List<MissionItem>, timing: TransferTiming, server: MissionServer): TransferOutcome<Unit>? {
     val upload = MissionUpload(type, items, timing)
     val outcome = run(upload::start, upload::onMessage, { upload.onTimeout() })
     if (outcome != TransferOutcome.AckMissing) return outcome
-    val download = MissionDownload(type, timing)
+    val download = MissionDownload(type, timing, inOrder = server.flavor == MissionServerFlavor.PX4)
     return when (val check = run(download::start, download::onMessage, download::onTimeout)) {
         is TransferOutcome.Done -> if (check.value.map { it.copy(current = false) } == items.map { it.copy(current = false) }) {
             TransferOutcome.Done(Unit)
@@ -64,7 +64,7 @@ class MissionTransferPropertyTest : StringSpec({
 
     "random lists over links with up to 30% loss plus duplication and reordering: uploaded and downloaded identical, or a typed failure, never a partial list" {
         checkAll(
-            PropTestConfig(iterations = 60, seed = 20261122),
+            PropTestConfig(iterations = 100, seed = 20261122),
             Arb.enum<MissionType>(), Arb.int(0..1000), Arb.enum<MissionServerFlavor>(),
             Arb.double(0.0, 0.3, includeNaNs = false), Arb.double(0.0, 0.2, includeNaNs = false), Arb.long(),
         ) { type, count, flavor, drop, duplicate, seed ->
@@ -72,11 +72,11 @@ class MissionTransferPropertyTest : StringSpec({
             val old = randomItems(type, random.nextInt(0, 20), random)
             val items = randomItems(type, count, random)
             val server = MissionServer(flavor, maxItems = 1000).apply { load(type, old) }
-            val faults = Faults(drop = drop, duplicate = duplicate, minDelayMs = 5, maxDelayMs = 60)
+            val faults = Faults(drop = drop, duplicate = duplicate, minDelayMs = 5, maxDelayMs = 60, hold = duplicate / 2)
             val link = VirtualLink(server, faults, faults, seed)
             val timing = TransferTiming()
 
-            val outcome = link.uploadAsDriver(type, items, timing)
+            val outcome = link.uploadAsDriver(type, items, timing, server)
             withClue("upload of $count ${type.name} items, drop $drop, dup $duplicate, ${flavor.name}: must end, not hang") {
                 outcome.shouldNotBeNull()
             }
@@ -90,7 +90,7 @@ class MissionTransferPropertyTest : StringSpec({
                 else -> Unit
             }
 
-            val download = MissionDownload(type, timing)
+            val download = MissionDownload(type, timing, inOrder = flavor == MissionServerFlavor.PX4)
             val downloaded = link.run(download::start, download::onMessage, download::onTimeout)
             withClue("download must end") { downloaded.shouldNotBeNull() }
             if (downloaded is TransferOutcome.Done) {
@@ -110,7 +110,7 @@ class MissionTransferPropertyTest : StringSpec({
             val server = MissionServer(flavor)
             val faults = Faults(drop = 0.1, minDelayMs = 10, maxDelayMs = 30)
             val link = VirtualLink(server, faults, faults, seed)
-            val outcome = link.uploadAsDriver(MissionType.MISSION, items, TransferTiming())
+            val outcome = link.uploadAsDriver(MissionType.MISSION, items, TransferTiming(), server)
             if (outcome !is TransferOutcome.Done) failures += "seed $seed ${flavor.name}: $outcome"
         }
         failures shouldBe emptyList()

@@ -4,7 +4,14 @@ import java.util.PriorityQueue
 import kotlin.random.Random
 
 /** Faults of a [VirtualLink] direction: probabilities and a delay range in virtual milliseconds. */
-internal data class Faults(val drop: Double = 0.0, val duplicate: Double = 0.0, val minDelayMs: Long = 5, val maxDelayMs: Long = 5)
+internal data class Faults(
+    val drop: Double = 0.0,
+    val duplicate: Double = 0.0,
+    val minDelayMs: Long = 5,
+    val maxDelayMs: Long = 5,
+    /** Probability that a message is held back 50..300 ms, arriving long after later ones. */
+    val hold: Double = 0.0,
+)
 
 /**
  * A ground-station machine and a [MissionServer] joined by a lossy link in virtual time: a
@@ -33,7 +40,7 @@ internal class VirtualLink(
         start: () -> MissionStep<T>,
         onMessage: (MissionMessage, Long) -> MissionStep<T>,
         onTimeout: (Long) -> MissionStep<T>,
-        limitMs: Long = 30 * 60_000,
+        limitMs: Long = 3 * 60 * 60_000, // generous: what is tested is that every transfer ends
     ): TransferOutcome<T>? {
         queue.clear()
         gcsTimerAt = Long.MAX_VALUE
@@ -83,7 +90,8 @@ internal class VirtualLink(
         if (random.nextDouble() < faults.drop) return
         val copies = if (random.nextDouble() < faults.duplicate) 2 else 1
         repeat(copies) {
-            val delayMs = if (faults.maxDelayMs > faults.minDelayMs) random.nextLong(faults.minDelayMs, faults.maxDelayMs + 1) else faults.minDelayMs
+            var delayMs = if (faults.maxDelayMs > faults.minDelayMs) random.nextLong(faults.minDelayMs, faults.maxDelayMs + 1) else faults.minDelayMs
+            if (random.nextDouble() < faults.hold) delayMs += random.nextLong(50, 301)
             queue += Event(now + delayMs * 1_000_000, order++, toVehicle, message)
         }
     }
