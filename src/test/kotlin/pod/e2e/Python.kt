@@ -1,7 +1,13 @@
 package pod.e2e
 
+import kotlinx.coroutines.flow.MutableSharedFlow
+import kotlinx.coroutines.flow.SharedFlow
+import kotlinx.coroutines.flow.asSharedFlow
+import kotlinx.coroutines.flow.first
 import java.io.File
+import java.io.IOException
 import java.util.concurrent.TimeUnit
+import kotlin.concurrent.thread
 
 /**
  * The Python that has the reference peers (pymavlink, mavsdk): `$POD_PYTHON`, or the `.venv` that
@@ -29,8 +35,78 @@ internal object Python {
             .redirectError(ProcessBuilder.Redirect.INHERIT)
             .start()
 
+    /**
+     * Starts [script] with [args] as a [JsonPeer]: its stdout is read as one JSON object per line,
+     * its stderr goes to this process's stderr.
+     */
+    fun startJson(script: String, vararg args: Any): JsonPeer =
+        JsonPeer(
+            script,
+            ProcessBuilder(listOf(executable, script(script)) + args.map { it.toString() })
+                .redirectError(ProcessBuilder.Redirect.INHERIT)
+                .start(),
+        )
+
     fun Process.stop() {
         destroy()
         if (!waitFor(5, TimeUnit.SECONDS)) destroyForcibly()
+    }
+}
+
+/**
+ * A Python peer that reports on stdout, one flat JSON object per line with an "event" field
+ * (numbers, strings, booleans, NaN; no nesting). Lines that are not JSON are passed to stderr.
+ */
+internal class JsonPeer(private val name: String, val process: Process) {
+    private val _events = MutableSharedFlow<Map<String, String>>(replay = 100_000)
+
+    /** Everything the peer printed so far and from now on. */
+    val events: SharedFlow<Map<String, String>> = _events.asSharedFlow()
+
+    init {
+        thread(isDaemon = true, name = "$name-stdout") {
+            try {
+                process.inputStream.bufferedReader().forEachLine { line ->
+                    val event = if (line.startsWith("{")) parseFlatJson(line) else null
+                    if (event == null || event["event"] != "item") System.err.println("[$name] $line")
+                    if (event != null) _events.tryEmit(event)
+                }
+            } catch (_: IOException) {
+                // The process was killed mid-line.
+            }
+            _events.tryEmit(mapOf("event" to EXITED, "code" to process.waitFor().toString()))
+        }
+    }
+
+    /**
+     * The first event named [event] that satisfies [predicate], printed before or after this call.
+     * Throws [AssertionError] if the peer exits without printing it.
+     */
+    suspend fun await(event: String, predicate: (Map<String, String>) -> Boolean = { true }): Map<String, String> {
+        val found = events.first { (it["event"] == event && predicate(it)) || it["event"] == EXITED }
+        if (found["event"] == EXITED && event != EXITED) throw AssertionError("$name exited with code ${found["code"]} before printing the \"$event\" event")
+        return found
+    }
+
+    /** Closes the peer's stdin (scripts that watch it exit), then ends it if it has not exited within 3 s. */
+    fun stop() {
+        try {
+            process.outputStream.close()
+        } catch (_: IOException) {
+        }
+        if (!process.waitFor(3, TimeUnit.SECONDS)) {
+            process.destroy()
+            if (!process.waitFor(5, TimeUnit.SECONDS)) process.destroyForcibly()
+        }
+    }
+
+    companion object {
+        /** The event this class adds when the peer's stdout closes, with its exit "code". */
+        const val EXITED = "exited"
+
+        private val FIELD = Regex("""\"(\w+)\":\s*("(?:[^"\\]|\\.)*"|[^,}]+)""")
+
+        private fun parseFlatJson(line: String): Map<String, String> =
+            FIELD.findAll(line).associate { m -> m.groupValues[1] to m.groupValues[2].trim().removeSurrounding("\"") }
     }
 }

@@ -1,0 +1,93 @@
+"""MAVSDK 4 as the ground station: uploads a mission with MissionRaw into whichever vehicle it hears.
+
+Usage: mavsdk_gcs.py LISTEN_PORT ITEMS_JSON SECONDS [--download]
+
+Listens with udpin://127.0.0.1:LISTEN_PORT, waits for the first autopilot to send a heartbeat
+there, uploads ITEMS_JSON (a JSON array of objects with the MISSION_ITEM_INT fields seq, frame,
+command, current, autocontinue, param1..param4, x, y, z, mission_type) with
+MissionRaw.upload_mission, and with --download downloads the mission back with
+MissionRaw.download_mission. Prints one JSON object per line on stdout:
+    {"event": "ready", "version": ..}
+    {"event": "system", "sysid": .., "autopilot": "ARDUPILOT"}
+    {"event": "uploaded", "result": "SUCCESS", "seconds": ..}
+    {"event": "item", ...fields...}                  with --download, one per downloaded item
+    {"event": "downloaded", "result": "SUCCESS", "count": N, "seconds": ..}
+    {"event": "done"}
+A failed step prints its MissionRaw result instead of SUCCESS and the script exits 1. The whole
+run is bounded by SECONDS (exit 3 when they pass). Loopback only.
+"""
+import json
+import os
+import sys
+import threading
+import time
+
+from mavsdk import ComponentType, Configuration, ConnectionResult, Mavsdk
+from mavsdk.plugins.mission_raw import MissionItem, MissionRaw, MissionRawError
+
+FIELDS = ("seq", "frame", "command", "current", "autocontinue", "param1", "param2", "param3", "param4",
+          "x", "y", "z", "mission_type")
+
+_out = threading.Lock()
+
+
+def emit(obj: dict) -> None:
+    with _out:
+        sys.stdout.write(json.dumps(obj) + "\n")
+        sys.stdout.flush()
+
+
+def watchdog(seconds: float) -> None:
+    time.sleep(seconds)
+    emit({"event": "error", "what": f"gave up after {seconds} s"})
+    os._exit(3)
+
+
+def main() -> int:
+    port, items_json, seconds = int(sys.argv[1]), sys.argv[2], float(sys.argv[3])
+    download = "--download" in sys.argv[4:]
+    threading.Thread(target=watchdog, args=(seconds,), daemon=True).start()
+    items = [MissionItem(**{f: item[f] for f in FIELDS}) for item in json.loads(items_json)]
+
+    mavsdk = Mavsdk(Configuration.create_with_component_type(ComponentType.GROUND_STATION))
+    try:
+        result = mavsdk.add_any_connection(f"udpin://127.0.0.1:{port}")
+        if result != ConnectionResult.SUCCESS:
+            emit({"event": "error", "what": f"add_any_connection: {ConnectionResult(result).name}"})
+            return 2
+        emit({"event": "ready", "version": mavsdk.version()})
+        system = mavsdk.first_autopilot(timeout_s=seconds)
+        if system is None:
+            emit({"event": "error", "what": "no autopilot heard"})
+            return 2
+        emit({"event": "system", "sysid": system.get_system_id(), "autopilot": system.autopilot_type().name})
+        mission = MissionRaw(system)
+
+        start = time.monotonic()
+        try:
+            mission.upload_mission(items)
+            emit({"event": "uploaded", "result": "SUCCESS", "seconds": round(time.monotonic() - start, 3)})
+        except MissionRawError as e:
+            emit({"event": "uploaded", "result": e.result.name, "seconds": round(time.monotonic() - start, 3)})
+            return 1
+
+        if download:
+            start = time.monotonic()
+            try:
+                back = mission.download_mission()
+            except MissionRawError as e:
+                emit({"event": "downloaded", "result": e.result.name, "count": 0,
+                      "seconds": round(time.monotonic() - start, 3)})
+                return 1
+            for item in back:
+                emit({"event": "item", **{f: getattr(item, f) for f in FIELDS}})
+            emit({"event": "downloaded", "result": "SUCCESS", "count": len(back),
+                  "seconds": round(time.monotonic() - start, 3)})
+        emit({"event": "done"})
+        return 0
+    finally:
+        mavsdk.destroy()
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,78 @@
+"""MAVSDK 4 as the vehicle: an AUTOPILOT component with MissionRawServer, sending to a ground station.
+
+Usage: mavsdk_vehicle.py GCS_PORT SYSID SECONDS [--no-mission-server]
+
+Connects with udpout://127.0.0.1:GCS_PORT (MAVSDK 4 sends its heartbeat there at 1 Hz and answers
+whoever talks back), so a ground station listening on that port finds it. Every list a ground
+station uploads is printed on stdout, one JSON object per line:
+    {"event": "item", "upload": K, "seq": .., "frame": .., "command": .., "current": ..,
+     "autocontinue": .., "param1": .., "param2": .., "param3": .., "param4": .., "x": .., "y": ..,
+     "z": .., "mission_type": ..}        one per item, in order
+    {"event": "upload", "upload": K, "result": "SUCCESS", "count": N}   after the items
+    {"event": "clear", "mission_type": T}      a MISSION_CLEAR_ALL the server acted on
+    {"event": "current", "seq": S}             the server's current item changed
+Floats are printed with repr() (NaN as NaN), which reads back as the same float32 value.
+With --no-mission-server the plugin is not created: the vehicle then ignores the mission protocol.
+Exits after SECONDS, or when stdin closes. Loopback only; every loop is bounded.
+"""
+import json
+import sys
+import threading
+import time
+
+from mavsdk import ComponentType, Configuration, ConnectionResult, Mavsdk
+from mavsdk.plugins.mission_raw_server import MissionRawServer
+
+FIELDS = ("seq", "frame", "command", "current", "autocontinue", "param1", "param2", "param3", "param4",
+          "x", "y", "z", "mission_type")
+
+_out = threading.Lock()
+
+
+def emit(obj: dict) -> None:
+    with _out:
+        sys.stdout.write(json.dumps(obj) + "\n")
+        sys.stdout.flush()
+
+
+def main() -> None:
+    port, sysid, seconds = int(sys.argv[1]), int(sys.argv[2]), float(sys.argv[3])
+    with_server = "--no-mission-server" not in sys.argv[4:]
+    config = Configuration.create_with_component_type(ComponentType.AUTOPILOT)
+    config.system_id = sysid
+    mavsdk = Mavsdk(config)
+    try:
+        result = mavsdk.add_any_connection(f"udpout://127.0.0.1:{port}")
+        if result != ConnectionResult.SUCCESS:
+            emit({"event": "error", "what": f"add_any_connection: {ConnectionResult(result).name}"})
+            sys.exit(2)
+        uploads = [0]
+        server = None
+        if with_server:
+            server = MissionRawServer(mavsdk.server_component())
+
+            def on_incoming(result, plan, _user_data):
+                uploads[0] += 1
+                k = uploads[0]
+                for item in plan.mission_items:
+                    emit({"event": "item", "upload": k, **{f: getattr(item, f) for f in FIELDS}})
+                emit({"event": "upload", "upload": k, "result": result.name, "count": len(plan.mission_items)})
+
+            server.subscribe_incoming_mission(on_incoming)
+            server.subscribe_clear_all(lambda mission_type, _: emit({"event": "clear", "mission_type": mission_type}))
+            server.subscribe_current_item_changed(lambda item, _: emit({"event": "current", "seq": item.seq}))
+        emit({"event": "ready", "version": mavsdk.version(), "sysid": sysid, "mission_server": with_server})
+        stdin_closed = threading.Event()
+
+        def watch_stdin():
+            sys.stdin.read()
+            stdin_closed.set()
+
+        threading.Thread(target=watch_stdin, daemon=True).start()
+        stdin_closed.wait(timeout=seconds)
+    finally:
+        mavsdk.destroy()
+
+
+if __name__ == "__main__":
+    main()
