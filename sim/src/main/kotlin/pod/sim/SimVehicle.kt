@@ -10,6 +10,8 @@ import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.ExperimentalCoroutinesApi
 import kotlinx.coroutines.Job
+import kotlinx.coroutines.NonCancellable
+import kotlinx.coroutines.withContext
 import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.cancel
 import kotlinx.coroutines.channels.BufferOverflow
@@ -72,6 +74,7 @@ public class SimVehicle(
     private val messages = SimMessages(config, bootedAt)
     private var scope: CoroutineScope? = null
     private var missionTimer: Job? = null
+    private var missionTimerAt: Long? = null
     private var missionPeer: Pair<Int, Int>? = null
 
     /**
@@ -198,15 +201,26 @@ public class SimVehicle(
         scheduleMissionTimer()
     }
 
+    /**
+     * Keeps one timer at the mission server's next deadline. A deadline that did not change keeps
+     * its timer: re-arming on every incoming message could cancel a timer in the middle of sending
+     * its re-request, and a ground station that keeps talking would then never hear one.
+     */
     private fun scheduleMissionTimer() {
+        val at = missionServer.nextTimeoutAt
+        if (at == missionTimerAt && missionTimer?.isActive == true) return
         missionTimer?.cancel()
-        val at = missionServer.nextTimeoutAt ?: return
+        missionTimerAt = at
+        if (at == null) return
         val scope = scope ?: return
         missionTimer = scope.launch {
             delay((at - clockNanos()).coerceAtLeast(0).nanoseconds)
             val (system, component) = missionPeer ?: return@launch
-            val replies = missionServer.onTimeout(clockNanos())
-            for (reply in replies) send(MissionWire.encode(reply, system, component))
+            withContext(NonCancellable) {
+                val replies = missionServer.onTimeout(clockNanos())
+                for (reply in replies) send(MissionWire.encode(reply, system, component))
+            }
+            missionTimerAt = null
             scheduleMissionTimer()
         }
     }
