@@ -51,10 +51,13 @@ internal class MissionDownload(
         }
     }
 
+    private var lastProgressAt = Long.MIN_VALUE
+
     fun onTimeout(now: Long): MissionStep<List<MissionItem>> {
         if (phase == Phase.ENDED) return MissionStep.NOTHING
+        if (lastProgressAt == Long.MIN_VALUE) lastProgressAt = now
         timeoutsInARow++
-        if (timeoutsInARow > timing.retries) {
+        if (timeoutsInARow > timing.retries && now - lastProgressAt >= timing.patience.inWholeNanoseconds) {
             val waitingFor = if (phase == Phase.LISTING) "the item count" else "item ${received.indexOfFirst { it == null }}"
             return end(TransferOutcome.Failed(MissionTimeout(type, timing.retries, rtt.timeoutNanos.nanoseconds, waitingFor, "download")))
         }
@@ -91,6 +94,7 @@ internal class MissionDownload(
     }
 
     private fun onCount(count: Int, now: Long): MissionStep<List<MissionItem>> {
+        lastProgressAt = now
         rtt.progressed()
         timeoutsInARow = 0
         if (count == 0) return finish()
@@ -111,6 +115,7 @@ internal class MissionDownload(
         if (seq !in received.indices) return MissionStep.NOTHING
         if (sequentialRetry && seq == cursor) {
             cursor++
+            lastProgressAt = now
             if (requestedAt[seq] > 0L) rtt.sample(now - requestedAt[seq])
             if (requestedAt[seq] != 0L) inFlight--
             requestedAt[seq] = 0L
@@ -124,6 +129,7 @@ internal class MissionDownload(
         requestedAt[seq] = 0L
         received[seq] = item
         receivedCount++
+        lastProgressAt = now
         while (lowestMissing < received.size && received[lowestMissing] != null) lowestMissing++
         timeoutsInARow = 0
         rtt.progressed()

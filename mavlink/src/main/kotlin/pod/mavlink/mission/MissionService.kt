@@ -50,7 +50,7 @@ public class MissionService internal constructor(
         MissionValidation.check(type, items)
         exclusive.withLock {
             val machine = MissionUpload(type, items, timing)
-            val outcome = drive(type, cancellable = true, { machine.start() }, machine::onMessage, { machine.onTimeout() }) {
+            val outcome = drive(type, cancellable = true, { machine.start() }, machine::onMessage, machine::onTimeout) {
                 onProgress(machine.progress)
             }
             if (outcome is TransferOutcome.AckMissing) {

@@ -50,14 +50,17 @@ internal class MissionUpload(
         }
     }
 
-    fun onTimeout(): MissionStep<Unit> {
+    private var lastProgressAt = Long.MIN_VALUE
+
+    fun onTimeout(now: Long): MissionStep<Unit> {
         if (phase == Phase.ENDED) return MissionStep.NOTHING
+        if (lastProgressAt == Long.MIN_VALUE) lastProgressAt = now
         timeoutsInARow++
         pendingError?.let { error ->
             // An error answer followed by silence: the vehicle meant it.
             if (timeoutsInARow >= 2) return end(TransferOutcome.Failed(MissionRejected(type, error, newest.takeIf { it >= 0 }, "upload")))
         }
-        if (timeoutsInARow > timing.retries) {
+        if (timeoutsInARow > timing.retries && now - lastProgressAt >= timing.patience.inWholeNanoseconds) {
             val waited = rtt.timeoutNanos.nanoseconds
             return end(
                 if (phase == Phase.AWAITING_ACK) {
@@ -107,6 +110,7 @@ internal class MissionUpload(
             if (newest >= 0 && seq == newest + 1 && firstSentAt[newest] >= 0) rtt.sample(now - firstSentAt[newest])
             rtt.progressed()
             timeoutsInARow = 0
+            lastProgressAt = now
             newest = seq
         }
         firstSentAt[seq] = if (firstSentAt[seq] == UNSENT) now else RETRANSMITTED

@@ -25,6 +25,12 @@ public data class TransferTiming(
      * vehicle's heartbeat.
      */
     public val retries: Int = 20,
+    /**
+     * Least time without progress before a transfer fails, whatever [retries] says: a vehicle may
+     * be ahead of us and waiting for its own re-request timer (ArduPilot's is 1 s), and at 30 %
+     * loss several of those can go missing in a row.
+     */
+    public val patience: Duration = 10.seconds,
     /** Download requests kept in flight at most. */
     public val window: Int = 16,
 ) {
@@ -34,6 +40,7 @@ public data class TransferTiming(
         require(initialTimeout in minTimeout..maxTimeout) { "initialTimeout must be in $minTimeout..$maxTimeout, was $initialTimeout" }
         require(retries >= 1) { "retries must be ≥ 1, was $retries" }
         require(window in 1..256) { "window must be in 1..256, was $window" }
+        require(!patience.isNegative()) { "patience must be ≥ 0, was $patience" }
     }
 }
 

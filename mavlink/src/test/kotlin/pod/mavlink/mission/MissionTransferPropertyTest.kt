@@ -46,7 +46,7 @@ private fun List<MissionItem>.stored() = map { it.copy(current = false) }
  */
 internal fun VirtualLink.uploadAsDriver(type: MissionType, items: List<MissionItem>, timing: TransferTiming, server: MissionServer): TransferOutcome<Unit>? {
     val upload = MissionUpload(type, items, timing)
-    val outcome = run(upload::start, upload::onMessage, { upload.onTimeout() })
+    val outcome = run(upload::start, upload::onMessage, upload::onTimeout)
     if (outcome != TransferOutcome.AckMissing) return outcome
     val download = MissionDownload(type, timing, inOrder = server.flavor == MissionServerFlavor.PX4)
     return when (val check = run(download::start, download::onMessage, download::onTimeout)) {
