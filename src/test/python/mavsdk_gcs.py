@@ -22,19 +22,10 @@ import sys
 import threading
 import time
 
+from mavsdk_peer_io import FIELDS, emit
 from mavsdk import ComponentType, Configuration, ConnectionResult, Mavsdk
 from mavsdk.plugins.mission_raw import MissionItem, MissionRaw, MissionRawError
 
-FIELDS = ("seq", "frame", "command", "current", "autocontinue", "param1", "param2", "param3", "param4",
-          "x", "y", "z", "mission_type")
-
-_out = threading.Lock()
-
-
-def emit(obj: dict) -> None:
-    with _out:
-        sys.stdout.write(json.dumps(obj) + "\n")
-        sys.stdout.flush()
 
 
 def watchdog(seconds: float) -> None:

@@ -15,24 +15,14 @@ Floats are printed with repr() (NaN as NaN), which reads back as the same float3
 With --no-mission-server the plugin is not created: the vehicle then ignores the mission protocol.
 Exits after SECONDS, or when stdin closes. Loopback only; every loop is bounded.
 """
-import json
 import sys
 import threading
 import time
 
+from mavsdk_peer_io import FIELDS, emit
 from mavsdk import ComponentType, Configuration, ConnectionResult, Mavsdk
 from mavsdk.plugins.mission_raw_server import MissionRawServer
 
-FIELDS = ("seq", "frame", "command", "current", "autocontinue", "param1", "param2", "param3", "param4",
-          "x", "y", "z", "mission_type")
-
-_out = threading.Lock()
-
-
-def emit(obj: dict) -> None:
-    with _out:
-        sys.stdout.write(json.dumps(obj) + "\n")
-        sys.stdout.flush()
 
 
 def main() -> None:
