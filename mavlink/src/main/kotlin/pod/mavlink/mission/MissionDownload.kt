@@ -19,10 +19,10 @@ internal class MissionDownload(
     private val timing: TransferTiming,
     /** The vehicle serves downloads only in order and drops the transfer otherwise (PX4). */
     private val inOrder: Boolean = false,
+    private val rtt: RoundTripEstimator = RoundTripEstimator(timing),
 ) {
     private enum class Phase { LISTING, RECEIVING, ENDED }
 
-    private val rtt = RoundTripEstimator(timing)
     private var phase = Phase.LISTING
     private var received: Array<MissionItem?> = emptyArray()
     private var requestedAt = LongArray(0) // 0: not in flight; > 0: first sent at; RETRANSMITTED
@@ -67,7 +67,11 @@ internal class MissionDownload(
         // an out-of-turn request whose ERROR we never saw): start it over, one item at a time.
         // Long silence from an in-order vehicle: it has probably dropped the transfer (after an ERROR
         // we never saw); only a new MISSION_REQUEST_LIST revives it. Stateless vehicles never do.
-        if (inOrder && timeoutsInARow == timing.retries / 2 && restarts < MAX_RESTARTS) return restart()
+        // Counted in time as well as in timeouts: at 30 % loss, ten short timeouts in a row happen
+        // every few hundred items, and a needless restart walks the whole list again.
+        if (inOrder && timeoutsInARow >= timing.retries / 2 && now - lastProgressAt >= timing.patience.inWholeNanoseconds / 4 && restarts < MAX_RESTARTS) {
+            return restart()
+        }
         if (sequentialRetry) {
             if (cursor >= received.size) return MissionStep(timerNanos = rtt.timeoutNanos)
             requestedAt[cursor] = RETRANSMITTED
@@ -168,6 +172,7 @@ internal class MissionDownload(
      */
     private fun restart(): MissionStep<List<MissionItem>> {
         restarts++
+        timeoutsInARow = 0 // a fresh streak: the restart itself is the answer to this one
         sequentialRetry = true
         window = 1
         phase = Phase.LISTING

@@ -36,6 +36,18 @@ public class MissionService internal constructor(
     public var timing: TransferTiming = TransferTiming(),
 ) {
     private val exclusive = Mutex()
+    private var roundTrip: RoundTripEstimator? = null
+    private var roundTripTiming: TransferTiming? = null
+
+    /** The round-trip estimate every transfer of this vehicle shares (anew when [timing] changed). */
+    private fun roundTrip(): RoundTripEstimator {
+        val current = timing
+        if (roundTripTiming != current) {
+            roundTrip = RoundTripEstimator(current)
+            roundTripTiming = current
+        }
+        return roundTrip!!.also { it.progressed() }
+    }
 
     /**
      * Uploads [items] as the vehicle's [type] list, reporting progress to [onProgress]. When the
@@ -49,7 +61,7 @@ public class MissionService internal constructor(
     ) {
         MissionValidation.check(type, items)
         exclusive.withLock {
-            val machine = MissionUpload(type, items, timing)
+            val machine = MissionUpload(type, items, timing, roundTrip())
             val outcome = drive(type, cancellable = true, { machine.start() }, machine::onMessage, machine::onTimeout) {
                 onProgress(machine.progress)
             }
@@ -91,7 +103,7 @@ public class MissionService internal constructor(
     }
 
     private suspend fun downloadLocked(type: MissionType, onProgress: (TransferProgress) -> Unit): List<MissionItem> {
-        val machine = MissionDownload(type, timing, inOrder = vehicle.identity.value.autopilot == Autopilot.PX4)
+        val machine = MissionDownload(type, timing, inOrder = vehicle.identity.value.autopilot == Autopilot.PX4, roundTrip())
         val outcome = drive(type, cancellable = true, { machine.start() }, machine::onMessage, machine::onTimeout) { onProgress(machine.progress) }
         @Suppress("UNCHECKED_CAST")
         return (outcome as TransferOutcome.Done<List<MissionItem>>).value

@@ -9,8 +9,9 @@ import kotlin.time.Duration.Companion.nanoseconds
  * The vehicle leads (MISSION_COUNT, then it requests each item); every request is answered with
  * MISSION_ITEM_INT, legacy MISSION_REQUEST included. Requests older than the newest are stale and
  * ignored. When the next request is late the machine does not wait for the vehicle's own
- * re-request timer: it resends the last item and sends the next one unasked — whichever of the two
- * was lost (our item, or the vehicle's request), the transfer moves on after one timeout. Vehicles
+ * re-request timer: it resends the last item and sends the next ones unasked, up to one past the
+ * highest it ever sent — whichever was lost (our item, or the vehicle's request, also after the
+ * vehicle took an unasked item), the transfer moves on after one timeout. Vehicles
  * answer an unexpected item harmlessly (ArduPilot with a non-final MISSION_ACK INVALID_SEQUENCE,
  * which is ignored here; PX4 silently). If the final MISSION_ACK does not come, the last item is
  * resent (PX4 and Pod's simulator then acknowledge again); when the budget runs out the outcome is
@@ -20,10 +21,10 @@ internal class MissionUpload(
     private val type: MissionType,
     private val items: List<MissionItem>,
     private val timing: TransferTiming,
+    private val rtt: RoundTripEstimator = RoundTripEstimator(timing),
 ) {
     private enum class Phase { COUNTING, SENDING, AWAITING_ACK, ENDED }
 
-    private val rtt = RoundTripEstimator(timing)
     private var phase = Phase.COUNTING
     private var newest = -1 // highest seq the vehicle has requested
     private val firstSentAt = LongArray(items.size) { UNSENT }
@@ -34,6 +35,7 @@ internal class MissionUpload(
     private var pendingError: MissionResult? = null
 
     private var accepted = false
+    private var highestSent = -1
 
     /** Items the vehicle has confirmed: those before the newest it asked for, or all once it accepted. */
     val progress: TransferProgress
@@ -75,14 +77,28 @@ internal class MissionUpload(
         rtt.backOff()
         val resend = when (phase) {
             Phase.COUNTING -> listOf(MissionMessage.Count(type, items.size))
-            Phase.SENDING -> listOf(item(newest), item(newest + 1)).also {
-                firstSentAt[newest] = RETRANSMITTED
-                firstSentAt[newest + 1] = RETRANSMITTED
-            }
+            Phase.SENDING -> probe()
             Phase.AWAITING_ACK -> listOf(item(items.size - 1))
             Phase.ENDED -> emptyList()
         }
         return MissionStep(resend, rtt.timeoutNanos)
+    }
+
+    /**
+     * The items the vehicle may be waiting for after a late request, in order: from the newest it
+     * asked for up to one past the highest we ever sent. The vehicle may have taken items we sent
+     * unasked and be waiting (on its own 1 s or 250 ms timer) for one we have not sent yet, its
+     * request lost; sent in order, the burst lets it take every item from the one it expects on.
+     */
+    private fun probe(): List<MissionMessage> {
+        val last = minOf(highestSent + 1, items.size - 1)
+        // Past the cap: the newest asked for, then the top of the range, where a vehicle that took
+        // a whole earlier burst waits.
+        val seqs = (newest..minOf(last, newest + MAX_PROBE - 1))
+        return seqs.map { seq ->
+            firstSentAt[seq] = RETRANSMITTED
+            item(seq)
+        }
     }
 
     private fun onRequest(seq: Int, now: Long): MissionStep<Unit> {
@@ -107,7 +123,7 @@ internal class MissionUpload(
             pendingError = null
             staleSeq = -1
             // Karn: only a request answering an item sent once measures the round trip.
-            if (newest >= 0 && seq == newest + 1 && firstSentAt[newest] >= 0) rtt.sample(now - firstSentAt[newest])
+            if (newest >= 0 && seq == newest + 1 && firstSentAt[newest] >= 0) rtt.sample(now - firstSentAt[newest], mayBeVehicleTimer = true)
             rtt.progressed()
             timeoutsInARow = 0
             lastProgressAt = now
@@ -154,11 +170,15 @@ internal class MissionUpload(
 
     private fun item(seq: Int): MissionMessage.Item {
         if (seq == items.size - 1) lastItemSent = true
+        if (seq > highestSent) highestSent = seq
         return MissionMessage.Item(items[seq])
     }
 
     private companion object {
         const val UNSENT = -1L
         const val RETRANSMITTED = -2L
+
+        /** Most items one late request makes us send: enough to catch up with a vehicle ahead, no flood. */
+        const val MAX_PROBE = 8
     }
 }

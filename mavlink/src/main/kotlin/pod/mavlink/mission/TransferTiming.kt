@@ -16,7 +16,7 @@ public data class TransferTiming(
     /** Timeout before any round trip was measured. */
     public val initialTimeout: Duration = 500.milliseconds,
     /** Shortest timeout, whatever the measured round trip. */
-    public val minTimeout: Duration = 40.milliseconds,
+    public val minTimeout: Duration = 20.milliseconds,
     /** Longest timeout, after backing off. */
     public val maxTimeout: Duration = 2.seconds,
     /**
@@ -44,11 +44,17 @@ public data class TransferTiming(
     }
 }
 
-/** Round-trip estimate and the timeout it implies; times are nanoseconds on the driver's clock. */
+/**
+ * Round-trip estimate and the timeout it implies; times are nanoseconds on the driver's clock.
+ *
+ * One estimator serves every transfer of a vehicle, so a transfer starts from what the previous
+ * one measured instead of [TransferTiming.initialTimeout].
+ */
 internal class RoundTripEstimator(private val timing: TransferTiming) {
     private var smoothed = -1.0
     private var deviation = 0.0
     private var backoff = 1
+    private var shortest = Long.MAX_VALUE
 
     /** Nanoseconds to wait for an answer now. */
     val timeoutNanos: Long
@@ -58,12 +64,24 @@ internal class RoundTripEstimator(private val timing: TransferTiming) {
             return (clamped * backoff).toLong().coerceAtMost(timing.maxTimeout.inWholeNanoseconds)
         }
 
-    /** A measured round trip (only of messages sent once: a retransmission's answer is ambiguous). */
-    fun sample(nanos: Long) {
-        val r = nanos.toDouble().coerceAtLeast(0.0)
-        if (smoothed < 0) {
-            smoothed = r
-            deviation = r / 2
+    /**
+     * A measured round trip (only of messages sent once: a retransmission's answer is ambiguous).
+     *
+     * [mayBeVehicleTimer]: the answer may have come from the vehicle's own re-request timer rather
+     * than from what we sent (an upload's next request does, when the first one was lost). Such a
+     * sample far above the shortest round trip seen is the vehicle's timer period (250 ms for PX4,
+     * 1 s for ArduPilot), not the link: taking it would stretch our timeout past the vehicle's, after
+     * which every one of its re-requests looks like a round trip and the estimate never comes down.
+     */
+    fun sample(nanos: Long, mayBeVehicleTimer: Boolean = false) {
+        val r = nanos.coerceAtLeast(0)
+        if (mayBeVehicleTimer && shortest != Long.MAX_VALUE && r > maxOf(8 * shortest, shortest + TIMER_MARGIN_NANOS)) return
+        if (r < shortest) shortest = r
+        if (smoothed < 0 || smoothed > 8.0 * r + TIMER_MARGIN_NANOS) {
+            // First sample, or one showing that the estimate so far was inflated (by a vehicle timer
+            // taken for a round trip before anything shorter was seen): start over from it.
+            smoothed = r.toDouble()
+            deviation = r / 2.0
         } else {
             deviation = 0.75 * deviation + 0.25 * kotlin.math.abs(smoothed - r)
             smoothed = 0.875 * smoothed + 0.125 * r
@@ -71,14 +89,19 @@ internal class RoundTripEstimator(private val timing: TransferTiming) {
         backoff = 1
     }
 
-    /** A timeout passed without an answer: wait twice as long next time (up to the maximum). */
+    /** A timeout passed without an answer: wait twice as long next time (once). */
     fun backOff() {
-        // Capped low: on a lossy radio a late answer is a lost one far more often than congestion.
-        if (backoff < 4) backoff *= 2
+        // Capped low: on a lossy radio a late answer is a lost one far more often than congestion,
+        // and every doubling is paid on each loss.
+        if (backoff < 2) backoff *= 2
     }
 
     /** An answer arrived: stop backing off. */
     fun progressed() {
         backoff = 1
+    }
+
+    private companion object {
+        const val TIMER_MARGIN_NANOS = 100_000_000L
     }
 }

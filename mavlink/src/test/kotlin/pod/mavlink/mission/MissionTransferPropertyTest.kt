@@ -3,6 +3,7 @@ package pod.mavlink.mission
 import io.kotest.assertions.withClue
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.nulls.shouldNotBeNull
+import io.kotest.matchers.longs.shouldBeLessThan
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.types.shouldBeInstanceOf
 import io.kotest.property.Arb
@@ -114,5 +115,49 @@ class MissionTransferPropertyTest : StringSpec({
             if (outcome !is TransferOutcome.Done) failures += "seed $seed ${flavor.name}: $outcome"
         }
         failures shouldBe emptyList()
+    }
+})
+
+/**
+ * How fast transfers go over a lossy link, in virtual time (deterministic: the same seeds give the
+ * same times on any machine). Guards the recovery paths that used to stall on the vehicle's own
+ * re-request timer: a vehicle ahead of us after an unasked item, a round-trip estimate inflated by
+ * the vehicle's timer, needless restarts of in-order downloads.
+ */
+class MissionTransferPaceTest : StringSpec({
+
+    for (flavor in MissionServerFlavor.entries) {
+        "at 30% loss each way on a 2 ms link, 100-item uploads and downloads with ${flavor.name} take a median under 6 s of virtual time" {
+            val faults = Faults(drop = 0.3, minDelayMs = 1, maxDelayMs = 3)
+            val timing = TransferTiming()
+            val uploads = ArrayList<Long>()
+            val downloads = ArrayList<Long>()
+            for (seed in 1L..11L) {
+                val items = randomItems(MissionType.MISSION, 100, Random(seed))
+                val server = MissionServer(flavor)
+                val link = VirtualLink(server, faults, faults, seed)
+                val roundTrip = RoundTripEstimator(timing) // shared, as MissionService shares it
+                val upload = MissionUpload(MissionType.MISSION, items, timing, roundTrip)
+                link.run(upload::start, upload::onMessage, upload::onTimeout).shouldNotBeNull()
+                uploads += link.elapsedMs
+                val download = MissionDownload(MissionType.MISSION, timing, inOrder = flavor == MissionServerFlavor.PX4, roundTrip)
+                link.run(download::start, download::onMessage, download::onTimeout).shouldBeInstanceOf<TransferOutcome.Done<*>>()
+                downloads += link.elapsedMs - uploads.last()
+            }
+            withClue("upload ms $uploads") { uploads.sorted()[5] shouldBeLessThan 6_000L }
+            withClue("download ms $downloads") { downloads.sorted()[5] shouldBeLessThan 6_000L }
+        }
+    }
+
+    "a round trip the vehicle's re-request timer made up does not stretch the timeout once a real one was seen" {
+        val timing = TransferTiming()
+        val estimate = RoundTripEstimator(timing)
+        estimate.sample(3_000_000, mayBeVehicleTimer = true)
+        repeat(20) { estimate.sample(250_000_000, mayBeVehicleTimer = true) } // PX4's 250 ms re-requests
+        estimate.timeoutNanos shouldBe timing.minTimeout.inWholeNanoseconds
+        // An inflated start (the timer was the first thing measured) is dropped at the first real sample.
+        val inflated = RoundTripEstimator(timing).apply { sample(1_000_000_000, mayBeVehicleTimer = true) }
+        inflated.sample(3_000_000)
+        inflated.timeoutNanos shouldBeLessThan 100_000_000L
     }
 })
