@@ -103,6 +103,37 @@ class MissionTransferPropertyTest : StringSpec({
         }
     }
 
+    "an upload cancelled at a random moment over a lossy link leaves the vehicle with the old list or the new one, idle, and ready for the next upload" {
+        checkAll(
+            PropTestConfig(iterations = 100, seed = 20261123),
+            Arb.enum<MissionType>(), Arb.int(1..300), Arb.enum<MissionServerFlavor>(),
+            Arb.double(0.0, 0.3, includeNaNs = false), Arb.long(0L..3_000L), Arb.long(),
+        ) { type, count, flavor, drop, cancelAtMs, seed ->
+            val random = Random(seed)
+            val old = randomItems(type, random.nextInt(0, 20), random)
+            val items = randomItems(type, count, random)
+            val server = MissionServer(flavor, maxItems = 1000).apply { load(type, old) }
+            val faults = Faults(drop = drop, duplicate = 0.05, minDelayMs = 2, maxDelayMs = 20)
+            val link = VirtualLink(server, faults, faults, seed)
+            val upload = MissionUpload(type, items, TransferTiming())
+            val outcome = link.run(upload::start, upload::onMessage, upload::onTimeout, limitMs = cancelAtMs)
+            if (outcome == null) {
+                // What MissionService sends when the caller's coroutine is cancelled.
+                withClue("the vehicle goes quiet after the cancel, whether or not the ACK got through") {
+                    link.sendAndSettle(listOf(MissionMessage.Ack(type, MissionResult.OPERATION_CANCELLED))) shouldBe true
+                }
+            }
+            val held = server.list(type).stored()
+            withClue("cancelled at $cancelAtMs ms: the vehicle holds the old list or the new one, never a mix") {
+                (held == old.stored() || held == items.stored()) shouldBe true
+            }
+            val next = randomItems(type, random.nextInt(1, 50), random)
+            val again = link.uploadAsDriver(type, next, TransferTiming(), server)
+            withClue("the next upload after the cancel: $again") { again.shouldBeInstanceOf<TransferOutcome.Done<*>>() }
+            server.list(type) shouldBe next.stored()
+        }
+    }
+
     "with 10% loss each way, 20 seeded uploads of 200 items into either flavour all succeed" {
         val failures = ArrayList<String>()
         for (seed in 1L..20L) {

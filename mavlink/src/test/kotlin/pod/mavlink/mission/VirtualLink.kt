@@ -74,6 +74,31 @@ internal class VirtualLink(
         }
     }
 
+    /**
+     * Sends [messages] to the vehicle as a ground station that has stopped listening would (what a
+     * cancelled transfer does), and lets the link run until nothing is in flight and the vehicle
+     * has no timer set, or [limitMs] of virtual time passed. Returns whether it went quiet.
+     */
+    fun sendAndSettle(messages: List<MissionMessage>, limitMs: Long = 60_000): Boolean {
+        gcsTimerAt = Long.MAX_VALUE
+        messages.forEach { send(it, toVehicle = true) }
+        val until = now + limitMs * 1_000_000
+        while (true) {
+            val serverAt = server.nextTimeoutAt ?: Long.MAX_VALUE
+            val eventAt = queue.peek()?.at ?: Long.MAX_VALUE
+            val next = minOf(serverAt, eventAt)
+            if (next == Long.MAX_VALUE) return true
+            if (next > until) return false
+            now = next
+            if (next == eventAt) {
+                val event = queue.poll()
+                if (event.toVehicle) server.onMessage(event.message!!, now).forEach { send(it, toVehicle = false) }
+            } else {
+                server.onTimeout(now).forEach { send(it, toVehicle = false) }
+            }
+        }
+    }
+
     private fun <T> apply(step: MissionStep<T>): TransferOutcome<T>? {
         step.send.forEach { send(it, toVehicle = true) }
         when (step.timerNanos) {
