@@ -14,12 +14,15 @@ data class MavsdkSetup(val python: File, val script: File, val log: File?)
  * bench/mavsdk_mission.py running as a subprocess, listening on loopback [port]: its stdout read
  * as one flat JSON object per line. [close] kills it and its mavsdk_server child.
  */
-class MavsdkPeer(setup: MavsdkSetup, port: Int, items: File, limits: Limits) : AutoCloseable {
+class MavsdkPeer(private val setup: MavsdkSetup, port: Int, items: File, limits: Limits, private val title: String) : AutoCloseable {
+    // Its own stderr file, so that MAVSDK's warnings can be told apart per run (and then go to the shared log).
+    private val stderr: File = File.createTempFile("mission-bench-mavsdk-", ".log").apply { deleteOnExit() }
+
     private val process: Process = ProcessBuilder(
         setup.python.path, setup.script.path, "--port", port.toString(), "--items", items.path, "--download",
         "--discover-seconds", limits.discovery.inWholeSeconds.toString(),
         "--transfer-seconds", limits.transfer.inWholeSeconds.toString(),
-    ).redirectError(setup.log?.let { ProcessBuilder.Redirect.appendTo(it) } ?: ProcessBuilder.Redirect.DISCARD).start()
+    ).redirectError(stderr).start()
 
     private val events = LinkedBlockingQueue<Map<String, String>>()
 
@@ -62,11 +65,20 @@ class MavsdkPeer(setup: MavsdkSetup, port: Int, items: File, limits: Limits) : A
         process.destroyForcibly()
         tree.forEach { it.destroyForcibly() }
         process.waitFor(5, TimeUnit.SECONDS)
+        setup.log?.appendText("== $title\n" + stderr.readText())
+        stderr.delete()
     }
+
+    /** MAVSDK's last warning or error on stderr (e.g. "Timeout: retries exceeded (…)"), without colour codes; read it before [close]. */
+    fun lastWarning(): String? = runCatching {
+        stderr.readLines().map { it.replace(ANSI, "") }.lastOrNull { "|Warn" in it || "|Error" in it }?.substringAfter("] ")?.trim()
+    }.getOrNull()
 
     companion object {
         /** The pseudo-event put when the peer's stdout closes. */
         const val EXITED = "exited"
+
+        private val ANSI = Regex("\u001B\\[[0-9;]*m")
 
         private val FIELD = Regex("""\"(\w+)\":\s*("(?:[^"\\]|\\.)*"|[^,}]+)""")
 

@@ -20,7 +20,7 @@ private val GRACE = 15.seconds
 suspend fun mavsdkTransfer(setup: MavsdkSetup, cell: Cell, seed: Long, items: List<MissionItem>, limits: Limits): TransferRun = coroutineScope {
     val itemsFile = File.createTempFile("mission-bench-", ".json").apply { writeText(items.toMavsdkJson()); deleteOnExit() }
     val port = freeUdpPort()
-    val peer = MavsdkPeer(setup, port, itemsFile, limits)
+    val peer = MavsdkPeer(setup, port, itemsFile, limits, "${cell.label}, seed $seed")
     var rig: RelayedVehicle? = null
     fun failed(what: String) = TransferRun(Station.MAVSDK, cell, seed, null, null, setupError = what)
     suspend fun await(event: String, limit: kotlin.time.Duration) = runInterruptible(Dispatchers.IO) { peer.await(event, limit) }
@@ -38,7 +38,12 @@ suspend fun mavsdkTransfer(setup: MavsdkSetup, cell: Cell, seed: Long, items: Li
             download = step(await("downloaded", limits.transfer + GRACE), "downloaded", limits)
             if (download.ok) mismatch = missionMismatch(cell.flavour, items, peer.items.map { it.toMissionItem() })
         }
-        TransferRun(Station.MAVSDK, cell, seed, upload, download, mismatch, droppedToGcs = rig.droppedToGcs, droppedToVehicle = rig.droppedToVehicle)
+        // MissionRaw's result name alone ("TIMEOUT") does not say what it was waiting for; its log does.
+        fun explained(step: Step?) = if (step == null || step.ok) step else step.copy(error = step.error + (peer.lastWarning()?.let { "; MAVSDK log: $it" } ?: ""))
+        TransferRun(
+            Station.MAVSDK, cell, seed, explained(upload), explained(download), mismatch,
+            droppedToGcs = rig.droppedToGcs, droppedToVehicle = rig.droppedToVehicle,
+        )
     } finally {
         peer.close()
         rig?.close()
@@ -53,5 +58,5 @@ private fun step(report: Map<String, String>?, event: String, limits: Limits): S
     report["event"] != event -> Step(false, report["seconds"]?.toDoubleOrNull() ?: Double.NaN, "PEER_EXITED: $report")
     report["result"] == "SUCCESS" -> Step(true, report.getValue("seconds").toDouble())
     report["result"] == "WATCHDOG" -> Step(false, report.getValue("seconds").toDouble(), "WATCHDOG: no outcome within ${limits.transfer} (script's watchdog)")
-    else -> Step(false, report["seconds"]?.toDoubleOrNull() ?: Double.NaN, "${report["result"]}: MissionRaw result")
+    else -> Step(false, report["seconds"]?.toDoubleOrNull() ?: Double.NaN, "${report["result"]} (MissionRaw result)")
 }

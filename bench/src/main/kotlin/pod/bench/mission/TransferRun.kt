@@ -21,7 +21,7 @@ data class Cell(val flavour: Autopilot, val items: Int, val lossPercent: Int) {
  */
 data class Step(val ok: Boolean, val seconds: Double, val error: String? = null) {
     /** The short name of what went wrong, for a table cell. */
-    val errorKind: String? get() = error?.substringBefore(':')?.trim()
+    val errorKind: String? get() = error?.takeWhile { it.isLetterOrDigit() || it == '_' }
 }
 
 /** One upload-then-download run of one ground station into a fresh vehicle behind a fresh relay. */
