@@ -7,6 +7,8 @@
 #
 #   bench/mission.sh                              the full run, PX4 flavour: about 20 minutes on 2 cores
 #   bench/mission.sh --flavours PX4,ARDUPILOT     both flavours: about twice as long (any option goes to the harness)
+#   bench/mission.sh --flavours ARDUPILOT --json bench/target/results/mission-ardupilot.json \
+#     --markdown bench/target/results/mission-ardupilot.md   ArduPilot alone, next to a PX4 run's results
 #   bench/mission.sh --quick                      a 3-minute smoke run: PX4, 10 and 100 items, 0 and 30 % loss, 3 seeded runs
 # ArduPilot is left out by default: with it the run takes about 40 minutes, most of it in runs at
 # 30 % loss, where an upload into ArduPilot waits on the vehicle's own 1 s re-request timer.
@@ -41,8 +43,9 @@ echo "mavsdk $(.venv/bin/python -c 'import importlib.metadata as m; print(m.vers
 
 echo "== mission transfer"
 # Every transfer is bounded inside the harness (120 s); this bounds the whole in case of a bug.
-timeout 5400 java -Xms512m -Xmx512m -cp "$cp" pod.bench.mission.MissionBenchKt "${settings[@]}" "$@" \
+# Options given to this script come last, so they override these (a later option wins).
+timeout 5400 java -Xms512m -Xmx512m -cp "$cp" pod.bench.mission.MissionBenchKt "${settings[@]}" \
   --python .venv/bin/python --mavsdk-script bench/mavsdk_mission.py \
   --mavsdk-log "$results/mission-mavsdk-stderr.log" \
-  --json "$results/mission.json" --markdown "$results/mission.md" \
+  --json "$results/mission.json" --markdown "$results/mission.md" "$@" \
   || echo "mission harness exited with $?"

@@ -74,7 +74,14 @@ object MissionReport {
         ?: "?"
 
     fun json(r: MissionResults, wall: Duration): String = buildString {
-        append("{\n  \"wallSeconds\": ${num(wall.inWholeMilliseconds / 1e3)},\n  \"floor\": [\n")
+        val o = r.options
+        append("{\n  \"wallSeconds\": ${num(wall.inWholeMilliseconds / 1e3)},\n")
+        append(
+            "  \"settings\": {\"sizes\": ${o.sizes}, \"lossPercents\": ${o.lossPercents}, \"flavours\": ${o.flavours.map { str(it.name) }}, " +
+                "\"successRuns\": ${o.successRuns}, \"successItems\": ${o.successItems}, \"successLossPercent\": ${o.successLossPercent}, " +
+                "\"discoveryLimitSeconds\": ${o.limits.discovery.inWholeSeconds}, \"transferLimitSeconds\": ${o.limits.transfer.inWholeSeconds}, \"seed\": ${o.seed}},\n",
+        )
+        append("  \"floor\": [\n")
         append(
             r.floor.joinToString(",\n") {
                 "    {\"path\": ${str(it.path)}, \"samples\": ${it.samples.size}, \"lost\": ${it.lost}, " +
