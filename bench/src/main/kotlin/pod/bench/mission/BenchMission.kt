@@ -1,0 +1,61 @@
+package pod.bench.mission
+
+import pod.core.vehicle.Autopilot
+import pod.mavlink.mission.MissionItem
+import pod.mavlink.mission.MissionType
+
+/**
+ * [count] NAV_WAYPOINTs (16) in MAV_FRAME_GLOBAL_RELATIVE_ALT_INT (6), in a line going north of
+ * Porto, 10 m apart, 30 m above home; item 0 current. Every field is exact in float32, so a
+ * download that went through MAVSDK's JSON compares equal.
+ */
+fun benchMission(count: Int): List<MissionItem> = List(count) { i ->
+    MissionItem(
+        seq = i,
+        frame = 6,
+        command = 16,
+        current = i == 0,
+        param2 = 2f, // acceptance radius
+        x = 411_780_460 + 900 * i,
+        y = -85_957_860 + 37 * (i % 50),
+        z = 30f + (i % 8) * 0.5f,
+    )
+}
+
+/**
+ * Null when [back] holds what was [sent], else what differs. ArduPilot keeps home in item 0
+ * whatever was sent there, so it is compared from item 1; `current` is not compared (a vehicle
+ * reports its own current item).
+ */
+fun missionMismatch(autopilot: Autopilot, sent: List<MissionItem>, back: List<MissionItem>): String? {
+    if (back.size != sent.size) return "came back with ${back.size} items, sent ${sent.size}"
+    val skip = if (autopilot == Autopilot.ARDUPILOT) 1 else 0
+    for (i in skip until sent.size) {
+        val a = sent[i].copy(current = false)
+        val b = back[i].copy(current = false)
+        if (a != b) return "item $i differs: sent $a, came back $b"
+    }
+    return null
+}
+
+/** The items as the JSON array bench/mavsdk_mission.py reads (MISSION_ITEM_INT field names). */
+fun List<MissionItem>.toMavsdkJson(): String = joinToString(",\n", "[\n", "\n]\n") {
+    fun f(v: Float) = v.toDouble().toString()
+    "{\"seq\":${it.seq},\"frame\":${it.frame},\"command\":${it.command}," +
+        "\"current\":${if (it.current) 1 else 0},\"autocontinue\":${if (it.autocontinue) 1 else 0}," +
+        "\"param1\":${f(it.param1)},\"param2\":${f(it.param2)},\"param3\":${f(it.param3)},\"param4\":${f(it.param4)}," +
+        "\"x\":${it.x},\"y\":${it.y},\"z\":${f(it.z)},\"mission_type\":${it.missionType.mavValue}}"
+}
+
+/** An "item" event of bench/mavsdk_mission.py as a [MissionItem]. */
+fun Map<String, String>.toMissionItem(): MissionItem {
+    fun int(name: String) = getValue(name).toInt()
+    fun float(name: String) = getValue(name).toDouble().toFloat()
+    return MissionItem(
+        seq = int("seq"), frame = int("frame"), command = int("command"),
+        current = int("current") != 0, autocontinue = int("autocontinue") != 0,
+        param1 = float("param1"), param2 = float("param2"), param3 = float("param3"), param4 = float("param4"),
+        x = int("x"), y = int("y"), z = float("z"),
+        missionType = MissionType.of(int("mission_type")) ?: error("unknown mission_type in $this"),
+    )
+}
