@@ -34,7 +34,8 @@ echo "OS: $(. /etc/os-release 2>/dev/null && echo "$PRETTY_NAME"), kernel $(unam
 echo "== build"
 ./mvnw -B -ntp -Pbench -pl bench -am package -DskipTests
 mkdir -p "$results"
-rm -f "$results/mission.json" "$results/mission.md" "$results/mission-mavsdk-stderr.log"
+# Stale default results go, unless options were given (they may name other files, next to these).
+if [ $# -eq 0 ]; then rm -f "$results/mission.json" "$results/mission.md" "$results/mission-mavsdk-stderr.log"; fi
 cp="$root/bench/target/pod-bench-0.1.0-SNAPSHOT.jar:$root/bench/target/lib/*"
 
 echo "== Python peers (MAVSDK 4.1)"
