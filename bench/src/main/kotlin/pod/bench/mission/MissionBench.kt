@@ -19,6 +19,7 @@ import kotlin.time.TimeSource
  * Usage: `MissionBenchKt [--sizes 10,100,1000] [--losses 0,10,30] [--flavours PX4,ARDUPILOT]
  * [--stations POD,MAVSDK] [--success-runs 20] [--success-items 100] [--success-loss 30]
  * [--floor-samples 2000] [--floor-warmup 500] [--transfer-limit 120s] [--seed 1]
+ * [--min-timeout 20ms] [--initial-timeout 500ms]
  * [--python .venv/bin/python] [--mavsdk-script bench/mavsdk_mission.py] [--mavsdk-log FILE]
  * [--json FILE] [--markdown FILE]`. Every run is bounded (discovery 30 s, each transfer by the
  * limit; a run that overruns is a failure), so the program ends by itself.
@@ -40,7 +41,7 @@ fun main(args: Array<String>) {
         suspend fun run(station: Station, cell: Cell, seed: Long): TransferRun {
             val items = benchMission(cell.items)
             val result = when (station) {
-                Station.POD -> podTransfer(cell, seed, items, o.limits)
+                Station.POD -> podTransfer(cell, seed, items, o.limits, o.timing)
                 Station.MAVSDK -> mavsdkTransfer(mavsdk, cell, seed, items, o.limits)
             }
             println("  " + result.describe())

@@ -1,6 +1,7 @@
 package pod.bench.mission
 
 import pod.core.vehicle.Autopilot
+import pod.mavlink.mission.TransferTiming
 import java.io.File
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.minutes
@@ -19,6 +20,8 @@ data class MissionBenchOptions(
     val floorWarmUp: Int = 500,
     val floorSamples: Int = 2000,
     val limits: Limits = Limits(),
+    /** Pod's transfer timing (`--min-timeout`, `--initial-timeout` change it; defaults otherwise). */
+    val timing: TransferTiming = TransferTiming(),
     val seed: Long = 1,
     val python: File = File(".venv/bin/python"),
     val mavsdkScript: File = File("bench/mavsdk_mission.py"),
@@ -46,6 +49,8 @@ data class MissionBenchOptions(
                     "--floor-samples" -> o.copy(floorSamples = value.toInt().also { require(it in 10..100_000) })
                     "--floor-warmup" -> o.copy(floorWarmUp = value.toInt().also { require(it in 0..100_000) })
                     "--transfer-limit" -> o.copy(limits = o.limits.copy(transfer = Duration.parse(value).also { require(it in 1.seconds..10.minutes) }))
+                    "--min-timeout" -> o.copy(timing = o.timing.copy(minTimeout = Duration.parse(value)))
+                    "--initial-timeout" -> o.copy(timing = o.timing.copy(initialTimeout = Duration.parse(value)))
                     "--seed" -> o.copy(seed = value.toLong())
                     "--python" -> o.copy(python = File(value))
                     "--mavsdk-script" -> o.copy(mavsdkScript = File(value))

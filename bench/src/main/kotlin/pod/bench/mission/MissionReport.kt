@@ -27,7 +27,10 @@ object MissionReport {
         }
         appendLine()
         val o = r.options
-        appendLine("Success rate (${o.successRuns} seeded runs each, ${o.successItems} items, ${o.successLossPercent} % loss each way; times of the successful runs):")
+        appendLine(
+            "Success rate (${o.successRuns} seeded runs each, ${o.successItems} items, ${o.successLossPercent} % loss each way; times of the successful runs; " +
+                "Pod's timeouts ${o.timing.minTimeout} minimum, ${o.timing.initialTimeout} initial):",
+        )
         appendLine()
         appendLine("| vehicle | ground station | upload ok | upload + download verified | upload s median / p90 | upload + download s median / p90 |")
         appendLine("|---|---|---:|---:|---:|---:|")
@@ -79,7 +82,8 @@ object MissionReport {
         append(
             "  \"settings\": {\"sizes\": ${o.sizes}, \"lossPercents\": ${o.lossPercents}, \"flavours\": ${o.flavours.map { str(it.name) }}, " +
                 "\"successRuns\": ${o.successRuns}, \"successItems\": ${o.successItems}, \"successLossPercent\": ${o.successLossPercent}, " +
-                "\"discoveryLimitSeconds\": ${o.limits.discovery.inWholeSeconds}, \"transferLimitSeconds\": ${o.limits.transfer.inWholeSeconds}, \"seed\": ${o.seed}},\n",
+                "\"discoveryLimitSeconds\": ${o.limits.discovery.inWholeSeconds}, \"transferLimitSeconds\": ${o.limits.transfer.inWholeSeconds}, \"seed\": ${o.seed}, " +
+                "\"podMinTimeoutMs\": ${o.timing.minTimeout.inWholeMilliseconds}, \"podInitialTimeoutMs\": ${o.timing.initialTimeout.inWholeMilliseconds}},\n",
         )
         append("  \"floor\": [\n")
         append(

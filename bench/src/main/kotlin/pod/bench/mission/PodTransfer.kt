@@ -10,6 +10,7 @@ import pod.mavlink.GroundStation
 import pod.mavlink.GroundStationConfig
 import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionType
+import pod.mavlink.mission.TransferTiming
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
@@ -18,7 +19,7 @@ import kotlin.time.TimeSource
  * Pod's GroundStation, in this JVM, as the ground station of one run: discovers the vehicle (not
  * timed), uploads [items] (timed), downloads them back (timed) and compares.
  */
-suspend fun podTransfer(cell: Cell, seed: Long, items: List<MissionItem>, limits: Limits): TransferRun = coroutineScope {
+suspend fun podTransfer(cell: Cell, seed: Long, items: List<MissionItem>, limits: Limits, timing: TransferTiming): TransferRun = coroutineScope {
     // Heartbeats cross the lossy relay too: at 30 % loss several in a row go missing now and then,
     // and the default 3 s would call the vehicle lost in the middle of a transfer.
     val gcs = GroundStation.open("udpin://127.0.0.1:0", this, GroundStationConfig(lostAfter = 30.seconds))
@@ -30,6 +31,7 @@ suspend fun podTransfer(cell: Cell, seed: Long, items: List<MissionItem>, limits
         } catch (e: TimeoutCancellationException) {
             return@coroutineScope TransferRun(Station.POD, cell, seed, null, null, setupError = "vehicle not discovered within ${limits.discovery}")
         }
+        vehicle.mission.timing = timing
         val upload = timed(limits.transfer) { vehicle.mission.upload(items, MissionType.MISSION) }
         var download: Step? = null
         var mismatch: String? = null
