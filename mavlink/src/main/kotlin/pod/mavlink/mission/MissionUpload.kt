@@ -91,11 +91,8 @@ internal class MissionUpload(
      * request lost; sent in order, the burst lets it take every item from the one it expects on.
      */
     private fun probe(): List<MissionMessage> {
-        val last = minOf(highestSent + 1, items.size - 1)
-        // Past the cap: the newest asked for, then the top of the range, where a vehicle that took
-        // a whole earlier burst waits.
-        val seqs = (newest..minOf(last, newest + MAX_PROBE - 1))
-        return seqs.map { seq ->
+        val last = minOf(highestSent + 1, items.size - 1, newest + MAX_PROBE - 1)
+        return (newest..last).map { seq ->
             firstSentAt[seq] = RETRANSMITTED
             item(seq)
         }
