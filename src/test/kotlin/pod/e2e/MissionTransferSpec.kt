@@ -91,6 +91,20 @@ class MissionTransferSpec : StringSpec({
         }
     }
 
+    "a partial write replaces items 3..5 of an ArduPilot vehicle's mission and leaves the rest, checked before sending" {
+        withVehicle(Autopilot.ARDUPILOT) { vehicle, sim ->
+            vehicle.mission.upload(waypoints(10))
+            val before = sim.missionServer.list(MissionType.MISSION)
+            val patch = waypoints(6).drop(3).map { it.copy(z = 80f) }
+            vehicle.mission.uploadPartial(patch)
+            val after = sim.missionServer.list(MissionType.MISSION)
+            after shouldBe before.take(3) + patch.map { it.copy(current = false) } + before.drop(6)
+            vehicle.mission.download().map { it.z } shouldBe after.map { it.z }
+            val gap = listOf(patch[0], patch[2])
+            shouldThrow<InvalidMission> { vehicle.mission.uploadPartial(gap) }.message!! shouldContain "seq must be 4 (items are numbered from 3 without gaps), was 5"
+        }
+    }
+
     "set-current moves the vehicle's current item" {
         withVehicle(Autopilot.PX4) { vehicle, sim ->
             vehicle.mission.upload(waypoints(10))

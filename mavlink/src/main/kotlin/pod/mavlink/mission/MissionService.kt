@@ -60,14 +60,42 @@ public class MissionService internal constructor(
         onProgress: (TransferProgress) -> Unit = {},
     ) {
         MissionValidation.check(type, items)
+        write(type, items, partialFrom = null, onProgress)
+    }
+
+    /**
+     * Replaces items `items.first().seq` up to `items.last().seq` of the vehicle's [type] list and
+     * leaves the others as they are (MISSION_WRITE_PARTIAL_LIST). The items must be numbered
+     * without gaps and lie within the list the vehicle holds. ArduPilot supports this; PX4 ignores
+     * the request, so the call ends in [MissionTimeout] there. When the final acknowledgement never
+     * arrives, the list is downloaded and the range compared, as for [upload].
+     */
+    public suspend fun uploadPartial(
+        items: List<MissionItem>,
+        type: MissionType = MissionType.MISSION,
+        onProgress: (TransferProgress) -> Unit = {},
+    ) {
+        require(items.isNotEmpty()) { "a partial upload needs at least one item" }
+        val first = items.first().seq
+        require(first >= 0) { "the first item's seq must be ≥ 0, was $first" }
+        MissionValidation.check(type, items, first)
+        write(type, items, first, onProgress)
+    }
+
+    /**
+     * Runs an upload (whole list, or from [partialFrom] on); when the final acknowledgement never
+     * came, downloads the list and succeeds only if the written range holds what was sent.
+     */
+    private suspend fun write(type: MissionType, items: List<MissionItem>, partialFrom: Int?, onProgress: (TransferProgress) -> Unit) {
         exclusive.withLock {
-            val machine = MissionUpload(type, items, timing, roundTrip())
+            val machine = MissionUpload(type, items, timing, roundTrip(), partialFrom)
             val outcome = drive(type, cancellable = true, { machine.start() }, machine::onMessage, machine::onTimeout) {
                 onProgress(machine.progress)
             }
             if (outcome is TransferOutcome.AckMissing) {
                 val onBoard = downloadLocked(type) {}
-                if (!sameList(type, onBoard, items)) throw MissionNotConfirmed(type, onBoard)
+                val written = if (partialFrom == null) onBoard else onBoard.drop(partialFrom).take(items.size)
+                if (!sameList(type, written, items, homeFirst = (partialFrom ?: 0) == 0)) throw MissionNotConfirmed(type, onBoard)
             }
             onProgress(TransferProgress(items.size, items.size))
         }
@@ -109,10 +137,10 @@ public class MissionService internal constructor(
         return (outcome as TransferOutcome.Done<List<MissionItem>>).value
     }
 
-    private fun sameList(type: MissionType, onBoard: List<MissionItem>, sent: List<MissionItem>): Boolean {
+    private fun sameList(type: MissionType, onBoard: List<MissionItem>, sent: List<MissionItem>, homeFirst: Boolean = true): Boolean {
         if (onBoard.size != sent.size) return false
         // ArduPilot keeps home in item 0 of a mission, whatever was sent there.
-        val skip = if (type == MissionType.MISSION && vehicle.identity.value.autopilot == Autopilot.ARDUPILOT) 1 else 0
+        val skip = if (homeFirst && type == MissionType.MISSION && vehicle.identity.value.autopilot == Autopilot.ARDUPILOT) 1 else 0
         return onBoard.drop(skip).map { it.copy(current = false) } == sent.drop(skip).map { it.copy(current = false) }
     }
 

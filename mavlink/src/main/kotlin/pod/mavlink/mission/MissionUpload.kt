@@ -22,7 +22,14 @@ internal class MissionUpload(
     private val items: List<MissionItem>,
     private val timing: TransferTiming,
     private val rtt: RoundTripEstimator = RoundTripEstimator(timing),
+    /**
+     * Null for a whole list (MISSION_COUNT); otherwise the seq of the first of [items] in a partial
+     * write (MISSION_WRITE_PARTIAL_LIST, ArduPilot only), which replaces just those items.
+     */
+    private val partialFrom: Int? = null,
 ) {
+    private val first = partialFrom ?: 0
+
     private enum class Phase { COUNTING, SENDING, AWAITING_ACK, ENDED }
 
     private var phase = Phase.COUNTING
@@ -33,6 +40,7 @@ internal class MissionUpload(
     private var errorsAfterLastItem = 0
     private var staleSeq = -1 // a request older than the newest, seen once: a late duplicate, or a restart?
     private var pendingError: MissionResult? = null
+    private var pendingErrorAt = 0L
 
     private var accepted = false
     private var highestSent = -1
@@ -41,13 +49,16 @@ internal class MissionUpload(
     val progress: TransferProgress
         get() = TransferProgress(if (accepted) items.size else newest.coerceAtLeast(0), items.size)
 
-    fun start(): MissionStep<Unit> = MissionStep(listOf(MissionMessage.Count(type, items.size)), rtt.timeoutNanos)
+    fun start(): MissionStep<Unit> = MissionStep(listOf(opening()), rtt.timeoutNanos)
+
+    private fun opening(): MissionMessage =
+        if (partialFrom == null) MissionMessage.Count(type, items.size) else MissionMessage.WritePartial(type, first, first + items.size - 1)
 
     fun onMessage(message: MissionMessage, now: Long): MissionStep<Unit> {
         if (phase == Phase.ENDED) return MissionStep.NOTHING
         return when (message) {
-            is MissionMessage.Request -> if (message.type == type) onRequest(message.seq, now) else MissionStep.NOTHING
-            is MissionMessage.Ack -> if (message.type == type) onAck(message.result) else MissionStep.NOTHING
+            is MissionMessage.Request -> if (message.type == type) onRequest(message.seq - first, now) else MissionStep.NOTHING
+            is MissionMessage.Ack -> if (message.type == type) onAck(message.result, now) else MissionStep.NOTHING
             else -> MissionStep.NOTHING
         }
     }
@@ -59,8 +70,10 @@ internal class MissionUpload(
         if (lastProgressAt == Long.MIN_VALUE) lastProgressAt = now
         timeoutsInARow++
         pendingError?.let { error ->
-            // An error answer followed by silence: the vehicle meant it.
-            if (timeoutsInARow >= 2) return end(TransferOutcome.Failed(MissionRejected(type, error, newest.takeIf { it >= 0 }, "upload")))
+            // An error answer followed by silence: the vehicle meant it. Silence long enough for the
+            // vehicle's own re-request timer (ArduPilot 1 s, PX4 250 ms), or its next request could
+            // still be on the way after a loss.
+            if (timeoutsInARow >= 2 && now - pendingErrorAt >= ERROR_SILENCE_NANOS) return end(TransferOutcome.Failed(MissionRejected(type, error, newest.takeIf { it >= 0 }?.plus(first), "upload")))
         }
         if (timeoutsInARow > timing.retries && now - lastProgressAt >= timing.patience.inWholeNanoseconds) {
             val waited = rtt.timeoutNanos.nanoseconds
@@ -69,14 +82,14 @@ internal class MissionUpload(
                     TransferOutcome.AckMissing
                 } else {
                     TransferOutcome.Failed(
-                        MissionTimeout(type, timing.retries, waited, if (phase == Phase.COUNTING) "the first item request" else "a request for item ${newest + 1}", "upload"),
+                        MissionTimeout(type, timing.retries, waited, if (phase == Phase.COUNTING) "the first item request" else "a request for item ${first + newest + 1}", "upload"),
                     )
                 },
             )
         }
         rtt.backOff()
         val resend = when (phase) {
-            Phase.COUNTING -> listOf(MissionMessage.Count(type, items.size))
+            Phase.COUNTING -> listOf(opening())
             Phase.SENDING -> probe()
             Phase.AWAITING_ACK -> listOf(item(items.size - 1))
             Phase.ENDED -> emptyList()
@@ -98,6 +111,7 @@ internal class MissionUpload(
         }
     }
 
+    /** [seq] counts from the first item of this transfer (its index in [items]). */
     private fun onRequest(seq: Int, now: Long): MissionStep<Unit> {
         if (seq !in items.indices) return MissionStep.NOTHING
         if (seq < newest) {
@@ -131,7 +145,7 @@ internal class MissionUpload(
         return MissionStep(listOf(item(seq)), rtt.timeoutNanos)
     }
 
-    private fun onAck(result: MissionResult): MissionStep<Unit> = when {
+    private fun onAck(result: MissionResult, now: Long): MissionStep<Unit> = when {
         // A stale ACCEPTED (from an earlier transfer) must not pass for this one: only once the
         // last item has gone out (asked for, or sent unasked after a lost request) can it be ours.
         result == MissionResult.ACCEPTED && (items.isEmpty() || lastItemSent) -> {
@@ -153,11 +167,17 @@ internal class MissionUpload(
         }
         // PX4 answers a duplicated MISSION_COUNT with ERROR ("busy") and carries on: an ERROR only
         // counts if the vehicle then falls silent (see onTimeout).
-        result == MissionResult.ERROR && phase != Phase.COUNTING -> {
-            pendingError = result
-            MissionStep.NOTHING
-        }
-        else -> end(TransferOutcome.Failed(MissionRejected(type, result, newest.takeIf { it >= 0 }, "upload")))
+        result == MissionResult.ERROR && phase != Phase.COUNTING -> pending(result, now)
+        // ArduPilot answers a repeated MISSION_WRITE_PARTIAL_LIST (ours, resent or duplicated on the
+        // way) with DENIED while it serves the first one: only silence afterwards makes it count.
+        result == MissionResult.DENIED && partialFrom != null -> pending(result, now)
+        else -> end(TransferOutcome.Failed(MissionRejected(type, result, newest.takeIf { it >= 0 }?.plus(first), "upload")))
+    }
+
+    private fun pending(error: MissionResult, now: Long): MissionStep<Unit> {
+        if (pendingError == null) pendingErrorAt = now
+        pendingError = error
+        return MissionStep.NOTHING
     }
 
     private fun end(outcome: TransferOutcome<Unit>): MissionStep<Unit> {
@@ -177,5 +197,8 @@ internal class MissionUpload(
 
         /** Most items one late request makes us send: enough to catch up with a vehicle ahead, no flood. */
         const val MAX_PROBE = 8
+
+        /** Silence after an ambiguous error answer before it counts: past ArduPilot's 1 s re-request. */
+        const val ERROR_SILENCE_NANOS = 1_500_000_000L
     }
 }

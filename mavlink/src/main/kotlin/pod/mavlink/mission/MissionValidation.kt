@@ -6,12 +6,12 @@ internal object MissionValidation {
     private const val RALLY_POINT = 5100
 
     /** Throws [InvalidMission] naming the first item that cannot be sent as a [type] list. */
-    fun check(type: MissionType, items: List<MissionItem>) {
+    fun check(type: MissionType, items: List<MissionItem>, first: Int = 0) {
         require(items.size <= 65535) { "at most 65535 items fit a MISSION_COUNT, was ${items.size}" }
         var currents = 0
         items.forEachIndexed { index, item ->
-            fun fail(reason: String): Nothing = throw InvalidMission(type, index, reason)
-            if (item.seq != index) fail("seq must be $index (items are numbered from 0 without gaps), was ${item.seq}")
+            fun fail(reason: String): Nothing = throw InvalidMission(type, first + index, reason)
+            if (item.seq != first + index) fail("seq must be ${first + index} (items are numbered from $first without gaps), was ${item.seq}")
             if (item.missionType != type) fail("belongs to the ${item.missionType.name.lowercase()} list, not ${type.name.lowercase()}")
             if (item.current) currents++
             if (item.frame !in 0..255) fail("frame must be 0..255, was ${item.frame}")

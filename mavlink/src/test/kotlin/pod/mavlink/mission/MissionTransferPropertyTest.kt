@@ -3,6 +3,7 @@ package pod.mavlink.mission
 import io.kotest.assertions.withClue
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.nulls.shouldNotBeNull
+import io.kotest.matchers.ints.shouldBeGreaterThan
 import io.kotest.matchers.longs.shouldBeLessThan
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.types.shouldBeInstanceOf
@@ -132,6 +133,48 @@ class MissionTransferPropertyTest : StringSpec({
             withClue("the next upload after the cancel: $again") { again.shouldBeInstanceOf<TransferOutcome.Done<*>>() }
             server.list(type) shouldBe next.stored()
         }
+    }
+
+    "partial writes into an ArduPilot vehicle over a lossy link replace exactly their range, or fail typed and leave the list whole" {
+        var written = 0
+        checkAll(
+            PropTestConfig(iterations = 100, seed = 20261124),
+            Arb.enum<MissionType>(), Arb.int(1..300), Arb.double(0.0, 0.3, includeNaNs = false), Arb.long(),
+        ) { type, size, drop, seed ->
+            val random = Random(seed)
+            val old = randomItems(type, size, random).stored()
+            val first = random.nextInt(0, size)
+            val count = random.nextInt(1, size - first + 1)
+            val patch = randomItems(type, first + count, random).drop(first).stored()
+            val server = MissionServer(MissionServerFlavor.ARDUPILOT).apply { load(type, old) }
+            val faults = Faults(drop = drop, duplicate = 0.05, minDelayMs = 2, maxDelayMs = 20)
+            val link = VirtualLink(server, faults, faults, seed)
+            val timing = TransferTiming()
+            val upload = MissionUpload(type, patch, timing, partialFrom = first)
+            var outcome: TransferOutcome<*>? = link.run(upload::start, upload::onMessage, upload::onTimeout)
+            val expected = old.take(first) + patch + old.drop(first + count)
+            if (outcome == TransferOutcome.AckMissing) {
+                // What MissionService does: download and compare the range.
+                val download = MissionDownload(type, timing)
+                val back = link.run(download::start, download::onMessage, download::onTimeout)
+                outcome = if (back is TransferOutcome.Done && back.value.stored() == expected) TransferOutcome.Done(Unit) else back
+            }
+            withClue("partial write of $count items at $first into $size, drop $drop: $outcome") {
+                outcome.shouldNotBeNull()
+                when (outcome) {
+                    is TransferOutcome.Done<*> -> {
+                        server.list(type).stored() shouldBe expected
+                        written++
+                    }
+                    is TransferOutcome.Failed -> {
+                        outcome.error.shouldBeInstanceOf<MissionException>()
+                        (server.list(type).stored() == old || server.list(type).stored() == expected) shouldBe true
+                    }
+                    else -> error("unexpected outcome $outcome")
+                }
+            }
+        }
+        withClue("at most 30 % loss: nearly every partial write goes through") { written shouldBeGreaterThan 90 }
     }
 
     "with 10% loss each way, 20 seeded uploads of 200 items into either flavour all succeed" {
