@@ -26,20 +26,11 @@ import threading
 import time
 
 from mavsdk import ComponentType, Configuration, ConnectionResult, Mavsdk
-from mavsdk.plugins.mission_raw import MissionItem, MissionRaw, MissionRawError
+from mavsdk.plugins.mission_raw import MissionItem, MissionRaw
 
-#: MissionItem fields, named as in MISSION_ITEM_INT (as src/test/python/mavsdk_peer_io.py has them).
-FIELDS = ("seq", "frame", "command", "current", "autocontinue", "param1", "param2", "param3", "param4",
-          "x", "y", "z", "mission_type")
-
-_out = threading.Lock()
-
-
-def emit(obj: dict) -> None:
-    # The watchdog thread prints too: one whole line at a time.
-    with _out:
-        sys.stdout.write(json.dumps(obj) + "\n")
-        sys.stdout.flush()
+# The output format and the timed MissionRaw steps are the interop tests' own.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "src", "test", "python"))
+from mavsdk_peer_io import FIELDS, download, emit, upload  # noqa: E402
 
 
 class Watchdog:
@@ -99,26 +90,10 @@ def main() -> int:
               "seconds": round(time.monotonic() - start, 3)})
         mission = MissionRaw(system)
 
-        start = watchdog.arm("uploaded", args.transfer_seconds)
-        try:
-            mission.upload_mission(items)
-            emit({"event": "uploaded", "result": "SUCCESS", "seconds": round(time.monotonic() - start, 3)})
-        except MissionRawError as e:
-            emit({"event": "uploaded", "result": e.result.name, "seconds": round(time.monotonic() - start, 3)})
+        if not upload(mission, items, watchdog.arm("uploaded", args.transfer_seconds)):
             return 1
-
-        if args.download:
-            start = watchdog.arm("downloaded", args.transfer_seconds)
-            try:
-                back = mission.download_mission()
-            except MissionRawError as e:
-                emit({"event": "downloaded", "result": e.result.name, "count": 0,
-                      "seconds": round(time.monotonic() - start, 3)})
-                return 1
-            seconds = round(time.monotonic() - start, 3)
-            for item in back:
-                emit({"event": "item", **{name: getattr(item, name) for name in FIELDS}})
-            emit({"event": "downloaded", "result": "SUCCESS", "count": len(back), "seconds": seconds})
+        if args.download and not download(mission, watchdog.arm("downloaded", args.transfer_seconds)):
+            return 1
         watchdog.arm("done", 10)
         emit({"event": "done"})
         return 0

@@ -22,10 +22,9 @@ import sys
 import threading
 import time
 
-from mavsdk_peer_io import FIELDS, emit
+from mavsdk_peer_io import FIELDS, download, emit, upload
 from mavsdk import ComponentType, Configuration, ConnectionResult, Mavsdk
-from mavsdk.plugins.mission_raw import MissionItem, MissionRaw, MissionRawError
-
+from mavsdk.plugins.mission_raw import MissionItem, MissionRaw
 
 
 def watchdog(seconds: float) -> None:
@@ -36,7 +35,7 @@ def watchdog(seconds: float) -> None:
 
 def main() -> int:
     port, items_json, seconds = int(sys.argv[1]), sys.argv[2], float(sys.argv[3])
-    download = "--download" in sys.argv[4:]
+    download_too = "--download" in sys.argv[4:]
     threading.Thread(target=watchdog, args=(seconds,), daemon=True).start()
     items = [MissionItem(**{f: item[f] for f in FIELDS}) for item in json.loads(items_json)]
 
@@ -54,26 +53,10 @@ def main() -> int:
         emit({"event": "system", "sysid": system.get_system_id(), "autopilot": system.autopilot_type().name})
         mission = MissionRaw(system)
 
-        start = time.monotonic()
-        try:
-            mission.upload_mission(items)
-            emit({"event": "uploaded", "result": "SUCCESS", "seconds": round(time.monotonic() - start, 3)})
-        except MissionRawError as e:
-            emit({"event": "uploaded", "result": e.result.name, "seconds": round(time.monotonic() - start, 3)})
+        if not upload(mission, items, time.monotonic()):
             return 1
-
-        if download:
-            start = time.monotonic()
-            try:
-                back = mission.download_mission()
-            except MissionRawError as e:
-                emit({"event": "downloaded", "result": e.result.name, "count": 0,
-                      "seconds": round(time.monotonic() - start, 3)})
-                return 1
-            for item in back:
-                emit({"event": "item", **{f: getattr(item, f) for f in FIELDS}})
-            emit({"event": "downloaded", "result": "SUCCESS", "count": len(back),
-                  "seconds": round(time.monotonic() - start, 3)})
+        if download_too and not download(mission, time.monotonic()):
+            return 1
         emit({"event": "done"})
         return 0
     finally:

@@ -56,14 +56,14 @@ internal class VirtualLink(
                 eventAt -> {
                     val event = queue.poll()
                     if (event.toVehicle) {
-                        server.onMessage(event.message!!, now).forEach { send(it, toVehicle = false) }
+                        toVehicle(event.message!!)
                         MissionStep.NOTHING
                     } else {
                         onMessage(event.message!!, now)
                     }
                 }
                 serverAt -> {
-                    server.onTimeout(now).forEach { send(it, toVehicle = false) }
+                    vehicleTimer()
                     MissionStep.NOTHING
                 }
                 else -> {
@@ -92,12 +92,16 @@ internal class VirtualLink(
             now = next
             if (next == eventAt) {
                 val event = queue.poll()
-                if (event.toVehicle) server.onMessage(event.message!!, now).forEach { send(it, toVehicle = false) }
+                if (event.toVehicle) toVehicle(event.message!!) // what comes back for the ground station is lost with it
             } else {
-                server.onTimeout(now).forEach { send(it, toVehicle = false) }
+                vehicleTimer()
             }
         }
     }
+
+    private fun toVehicle(message: MissionMessage) = server.onMessage(message, now).forEach { send(it, toVehicle = false) }
+
+    private fun vehicleTimer() = server.onTimeout(now).forEach { send(it, toVehicle = false) }
 
     private fun <T> apply(step: MissionStep<T>): TransferOutcome<T>? {
         step.send.forEach { send(it, toVehicle = true) }
