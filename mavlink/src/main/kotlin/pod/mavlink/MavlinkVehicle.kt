@@ -1,5 +1,6 @@
 package pod.mavlink
 
+import io.dronefleet.mavlink.common.Statustext
 import io.dronefleet.mavlink.minimal.Heartbeat
 import kotlinx.coroutines.channels.BufferOverflow
 import kotlinx.coroutines.flow.MutableSharedFlow
@@ -10,6 +11,8 @@ import kotlinx.coroutines.flow.asSharedFlow
 import kotlinx.coroutines.flow.asStateFlow
 import pod.core.vehicle.ConnectionState
 import pod.core.vehicle.LinkQuality
+import pod.core.vehicle.Severity
+import pod.core.vehicle.StatusText
 import pod.core.vehicle.VehicleIdentity
 import pod.mavlink.codec.MavFrame
 import pod.mavlink.link.LinkPeer
@@ -41,6 +44,10 @@ public class MavlinkVehicle internal constructor(
         extraBufferCapacity = 1024,
         onBufferOverflow = BufferOverflow.DROP_OLDEST,
     )
+    private val _statusTexts = MutableSharedFlow<StatusText>(
+        extraBufferCapacity = 64,
+        onBufferOverflow = BufferOverflow.DROP_OLDEST,
+    )
     private val gaps = SequenceGaps()
 
     @Volatile internal var lastHeartbeat: TimeMark = TimeSource.Monotonic.markNow()
@@ -60,6 +67,18 @@ public class MavlinkVehicle internal constructor(
 
     /** Upload, download and clear its mission, fence and rally lists. */
     public val mission: pod.mavlink.mission.MissionService = pod.mavlink.mission.MissionService(this)
+
+    /** Send commands and wait for their acknowledgement. */
+    public val commands: pod.mavlink.command.CommandService = pod.mavlink.command.CommandService(this)
+
+    /** Read and write its parameters. */
+    public val params: pod.mavlink.param.ParamService = pod.mavlink.param.ParamService(this)
+
+    /** Arm, change mode, take off, land, return, go to, pause and continue, each confirmed. */
+    public val action: pod.mavlink.action.VehicleActions = pod.mavlink.action.VehicleActions(this)
+
+    /** Text lines the vehicle sends (STATUSTEXT), as they arrive. */
+    public val statusTexts: SharedFlow<StatusText> = _statusTexts.asSharedFlow()
 
     /** Every message the vehicle sends (a slow collector loses the oldest beyond 1024 buffered). */
     public val messages: SharedFlow<InboundMessage> = _messages.asSharedFlow()
@@ -84,6 +103,10 @@ public class MavlinkVehicle internal constructor(
             telemetry.onHeartbeat(updated, message)
         } else if (message != null && frame.componentId == _identity.value.componentId) {
             telemetry.onMessage(message)
+        }
+        if (message is Statustext) {
+            val severity = Severity.entries.getOrElse(message.severity().value()) { Severity.DEBUG }
+            _statusTexts.tryEmit(StatusText(severity, message.text().trimEnd('\u0000')))
         }
         _messages.tryEmit(InboundMessage(frame, message))
     }

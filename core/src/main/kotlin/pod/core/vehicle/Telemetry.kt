@@ -93,3 +93,31 @@ public enum class ConnectionState {
     /** No heartbeat for longer than the configured silence; the vehicle may come back. */
     LOST,
 }
+
+/** How serious a vehicle's text message is (MAV_SEVERITY, most serious first). */
+public enum class Severity {
+    /** System is unusable. */
+    EMERGENCY,
+    /** Action must be taken immediately. */
+    ALERT,
+    /** Critical condition; ArduPilot's arming-check failures come at this level. */
+    CRITICAL,
+    /** Error condition. */
+    ERROR,
+    /** Warning. */
+    WARNING,
+    /** Normal but significant. */
+    NOTICE,
+    /** Informational. */
+    INFO,
+    /** Debug output. */
+    DEBUG,
+}
+
+/** A line of text a vehicle sent (STATUSTEXT): why it refused to arm, that it reached a waypoint, … */
+public data class StatusText(
+    /** How serious it is. */
+    public val severity: Severity,
+    /** The text. */
+    public val text: String,
+)

@@ -57,6 +57,43 @@ public object FlightModes {
         else -> arduTable(type).entries.firstOrNull { it.value == name.uppercase() }?.key?.toLong()
     }
 
+    /**
+     * The name of the mode that plays [role] on [autopilot] flying [type], or null when it has none
+     * (an ArduPilot plane has no LAND mode: it lands through its mission's landing sequence).
+     */
+    public fun forRole(autopilot: Autopilot, type: VehicleType, role: ModeRole): String? = when {
+        autopilot == Autopilot.PX4 -> when (role) {
+            ModeRole.HOLD, ModeRole.GUIDED -> "AUTO.LOITER"
+            ModeRole.MISSION -> "AUTO.MISSION"
+            ModeRole.RETURN -> "AUTO.RTL"
+            ModeRole.LAND -> "AUTO.LAND"
+            ModeRole.TAKEOFF -> "AUTO.TAKEOFF"
+        }
+        type.isFixedWing -> when (role) {
+            ModeRole.HOLD -> "LOITER"
+            ModeRole.GUIDED -> "GUIDED"
+            ModeRole.MISSION -> "AUTO"
+            ModeRole.RETURN -> "RTL"
+            ModeRole.LAND -> null
+            ModeRole.TAKEOFF -> "TAKEOFF"
+        }
+        else -> when (role) {
+            // LOITER holds position and altitude with no pilot input; modes that need sticks
+            // (STABILIZE, ALT_HOLD) would let a multicopter drift or sink.
+            ModeRole.HOLD -> "LOITER"
+            ModeRole.GUIDED, ModeRole.TAKEOFF -> "GUIDED"
+            ModeRole.MISSION -> "AUTO"
+            ModeRole.RETURN -> "RTL"
+            ModeRole.LAND -> "LAND"
+        }
+    }
+
+    /** Every mode name Pod knows for [autopilot] flying [type]. */
+    public fun names(autopilot: Autopilot, type: VehicleType): List<String> = when (autopilot) {
+        Autopilot.PX4 -> px4Main.values.filter { it != "AUTO" } + px4AutoSub.values.map { "AUTO.$it" }
+        else -> arduTable(type).values.toList()
+    }
+
     private fun nameOf(autopilot: Autopilot, type: VehicleType, customMode: Long): String? = when (autopilot) {
         Autopilot.PX4 -> {
             val main = ((customMode shr 16) and 0xFF).toInt()
@@ -72,8 +109,25 @@ public object FlightModes {
         else -> null
     }
 
-    private fun arduTable(type: VehicleType): Map<Int, String> =
-        if (type == VehicleType.FIXED_WING || type == VehicleType.VTOL) arduPlane else arduCopter
+    private fun arduTable(type: VehicleType): Map<Int, String> = if (type.isFixedWing) arduPlane else arduCopter
+
+    private val VehicleType.isFixedWing: Boolean get() = this == VehicleType.FIXED_WING || this == VehicleType.VTOL
 
     private const val PX4_AUTO = 4
+}
+
+/** What a flight mode is for, so actions can pick the right mode on every autopilot. */
+public enum class ModeRole {
+    /** Stay where it is: hover, or circle for a plane. */
+    HOLD,
+    /** Fly to points the ground station gives. */
+    GUIDED,
+    /** Fly the uploaded mission. */
+    MISSION,
+    /** Return to launch. */
+    RETURN,
+    /** Land where it is. */
+    LAND,
+    /** Take off. */
+    TAKEOFF,
 }

@@ -1,0 +1,43 @@
+package pod.mavlink.action
+
+import pod.core.vehicle.Autopilot
+import pod.core.vehicle.VehicleType
+import kotlin.time.Duration
+
+/** An action the vehicle did not confirm. Command failures come as [pod.mavlink.command.CommandException]. */
+public sealed class ActionException(message: String) : Exception(message)
+
+/** [mode] is not a mode of [autopilot] flying [type]; [known] lists the ones that are. */
+public class UnknownMode(
+    /** The name asked for. */
+    public val mode: String,
+    /** The vehicle's autopilot. */
+    public val autopilot: Autopilot,
+    /** The vehicle's airframe. */
+    public val type: VehicleType,
+    /** Mode names the vehicle has. */
+    public val known: List<String>,
+) : ActionException("$autopilot ${type.name.lowercase()} has no mode \"$mode\"; known: ${known.joinToString()}")
+
+/** The vehicle has no way to do [action] (an ArduPilot plane cannot land without a landing sequence). */
+public class ActionUnsupported(
+    /** What was asked. */
+    public val action: String,
+    /** Why it cannot be done. */
+    public val reason: String,
+) : ActionException("$action: $reason")
+
+/**
+ * The vehicle accepted [action] but its telemetry did not show [expected] within [waited];
+ * [observed] is what it showed last.
+ */
+public class ActionNotConfirmed(
+    /** What was asked. */
+    public val action: String,
+    /** The state that would have confirmed it. */
+    public val expected: String,
+    /** The state seen last. */
+    public val observed: String,
+    /** How long Pod watched. */
+    public val waited: Duration,
+) : ActionException("$action was accepted but the vehicle did not show $expected within $waited (last seen: $observed)")

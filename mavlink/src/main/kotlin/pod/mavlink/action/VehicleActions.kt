@@ -1,0 +1,297 @@
+package pod.mavlink.action
+
+import io.dronefleet.mavlink.common.SetMode
+import io.dronefleet.mavlink.common.MavMode
+import io.dronefleet.mavlink.util.EnumValue
+import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.combine
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.withTimeoutOrNull
+import pod.core.units.Distance
+import pod.core.units.Location
+import pod.core.units.Speed
+import pod.core.units.m
+import pod.core.vehicle.Autopilot
+import pod.core.vehicle.ConnectionState
+import pod.core.vehicle.LandedState
+import pod.core.vehicle.VehicleLost
+import pod.core.vehicle.VehicleType
+import pod.mavlink.MavlinkVehicle
+import pod.mavlink.command.CommandRejected
+import pod.mavlink.command.CommandResult
+import pod.mavlink.command.VehicleCommand
+import pod.mavlink.telemetry.FlightModes
+import pod.mavlink.telemetry.ModeRole
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.minutes
+import kotlin.time.Duration.Companion.seconds
+
+/**
+ * What a ground-station operator does to one vehicle, each step confirmed: the command's
+ * acknowledgement and, where it matters, the state the vehicle then reports (armed, mode,
+ * altitude). Each call returns once confirmed and throws otherwise:
+ * [pod.mavlink.command.CommandException] when the vehicle refused or never answered,
+ * [ActionException] when it answered but did not do it, [VehicleLost] when it fell silent.
+ *
+ * Modes are picked per autopilot and airframe ([FlightModes.forRole]): hold is LOITER on ArduPilot
+ * and AUTO.LOITER on PX4, never a mode in which a multicopter without stick input would sink.
+ */
+public class VehicleActions internal constructor(private val vehicle: MavlinkVehicle) {
+    @Volatile private var pausedByCommand: Boolean? = null
+
+    /** How long a state change (armed flag, mode) may take to show in telemetry after the ack. */
+    public var confirmTimeout: Duration = 8.seconds
+
+    /** Arms the motors ([force] skips the autopilot's pre-arm checks) and waits until telemetry shows it armed. */
+    public suspend fun arm(force: Boolean = false) {
+        command(VehicleCommand(MAV_CMD_COMPONENT_ARM_DISARM, param1 = 1f, param2 = if (force) FORCE_MAGIC else 0f))
+        confirm("arm", "armed", vehicle.telemetry.armed) { it }
+    }
+
+    /** Disarms the motors ([force] even in flight, which drops a multicopter) and waits until telemetry shows it. */
+    public suspend fun disarm(force: Boolean = false) {
+        command(VehicleCommand(MAV_CMD_COMPONENT_ARM_DISARM, param1 = 0f, param2 = if (force) FORCE_MAGIC else 0f))
+        confirm("disarm", "disarmed", vehicle.telemetry.armed) { !it }
+    }
+
+    /**
+     * Switches to the mode called [name] ("GUIDED", "AUTO", "AUTO.MISSION" on PX4, …) and waits
+     * until the heartbeat reports it. Throws [UnknownMode] for a name the vehicle does not have.
+     */
+    public suspend fun setMode(name: String) {
+        val (autopilot, type) = airframe()
+        val custom = FlightModes.customMode(autopilot, type, name)
+            ?: throw UnknownMode(name, autopilot, type, FlightModes.names(autopilot, type))
+        if (vehicle.telemetry.mode.value?.customMode == custom) return
+        val command = if (autopilot == Autopilot.PX4) {
+            VehicleCommand(MAV_CMD_DO_SET_MODE, param1 = CUSTOM_MODE_ENABLED, param2 = ((custom shr 16) and 0xFF).toFloat(), param3 = ((custom shr 24) and 0xFF).toFloat())
+        } else {
+            VehicleCommand(MAV_CMD_DO_SET_MODE, param1 = CUSTOM_MODE_ENABLED, param2 = custom.toFloat())
+        }
+        try {
+            command(command)
+        } catch (e: CommandRejected) {
+            if (e.result != CommandResult.UNSUPPORTED) throw e
+            // Autopilots older than DO_SET_MODE take the (unacknowledged) SET_MODE message.
+            vehicle.send(SetMode.builder().targetSystem(vehicle.systemId).baseMode(EnumValue.create<MavMode>(1)).customMode(custom).build())
+        }
+        confirm("set mode $name", "mode $name", vehicle.telemetry.mode) { it?.customMode == custom }
+    }
+
+    /**
+     * Takes off to [altitude] above home and waits until it is reached (within 5 %, at least
+     * 1 m) or [timeout] passes. The vehicle must be armed. ArduPilot copters switch to GUIDED
+     * first; ArduPilot planes use TAKEOFF mode with TKOFF_ALT; PX4 takes NAV_TAKEOFF to an
+     * altitude above sea level, computed from home.
+     */
+    public suspend fun takeoff(altitude: Distance, timeout: Duration = 2.minutes) {
+        require(altitude.meters > 0 && altitude.meters <= 10_000) { "altitude must be in (0, 10000] m, was $altitude" }
+        val (autopilot, type) = airframe()
+        when {
+            autopilot == Autopilot.PX4 -> {
+                val home = homeAltitude() ?: throw ActionUnsupported("takeoff", "home altitude unknown (no HOME_POSITION or GLOBAL_POSITION_INT yet)")
+                command(VehicleCommand(MAV_CMD_NAV_TAKEOFF, param4 = Float.NaN, param5 = Double.NaN, param6 = Double.NaN, param7 = (home + altitude.meters).toFloat()))
+            }
+            isPlane(type) -> {
+                vehicle.params.write("TKOFF_ALT", altitude.meters)
+                setMode(role(ModeRole.TAKEOFF))
+            }
+            else -> {
+                setMode(role(ModeRole.GUIDED))
+                command(VehicleCommand(MAV_CMD_NAV_TAKEOFF, param7 = altitude.meters.toFloat()))
+            }
+        }
+        val tolerance = maxOf(1.0, altitude.meters * 0.05)
+        confirm("takeoff to $altitude", "altitude ≥ ${altitude.meters - tolerance} m", vehicle.telemetry.position, timeout) {
+            it != null && it.relativeAltitude.meters >= altitude.meters - tolerance
+        }
+    }
+
+    /**
+     * Lands: a multicopter where it is (NAV_LAND, confirmed by the LAND mode); an ArduPilot plane
+     * through its mission's landing sequence (DO_LAND_START, confirmed by AUTO). Returns when
+     * the landing has begun; [awaitLanded] waits for touchdown.
+     */
+    public suspend fun land() {
+        val (autopilot, type) = airframe()
+        if (autopilot != Autopilot.PX4 && isPlane(type)) {
+            command(VehicleCommand(MAV_CMD_DO_LAND_START))
+            confirmMode("land", ModeRole.MISSION)
+        } else {
+            command(VehicleCommand(MAV_CMD_NAV_LAND, param4 = Float.NaN, param5 = Double.NaN, param6 = Double.NaN))
+            confirmMode("land", ModeRole.LAND)
+        }
+    }
+
+    /** Returns to launch (NAV_RETURN_TO_LAUNCH), confirmed by the return mode. */
+    public suspend fun returnToLaunch() {
+        command(VehicleCommand(MAV_CMD_NAV_RETURN_TO_LAUNCH))
+        confirmMode("return to launch", ModeRole.RETURN)
+    }
+
+    /**
+     * Flies to [target] (altitude above sea level) and holds there, at [speed] or the vehicle's
+     * own: DO_REPOSITION as COMMAND_INT (ArduPilot takes it only in that form), switching to the
+     * guided mode first. Returns once accepted; [awaitArrival] waits until it is there.
+     */
+    public suspend fun goto(target: Location, speed: Speed? = null) {
+        val guided = role(ModeRole.GUIDED)
+        if (airframe().first != Autopilot.PX4) setMode(guided)
+        command(
+            VehicleCommand(
+                MAV_CMD_DO_REPOSITION,
+                param1 = speed?.metersPerSecond?.toFloat() ?: -1f,
+                param2 = REPOSITION_CHANGE_MODE,
+                param4 = Float.NaN,
+                param5 = target.latitude, param6 = target.longitude, param7 = target.altitude.meters.toFloat(),
+                frame = MAV_FRAME_GLOBAL,
+            ),
+        )
+        confirm("goto", "mode $guided", vehicle.telemetry.mode) { it?.name == guided }
+    }
+
+    /** Stops and holds position (and altitude): LOITER, or AUTO.LOITER on PX4; a plane circles. */
+    public suspend fun hold() {
+        setMode(role(ModeRole.HOLD))
+    }
+
+    /**
+     * Pauses the mission where the vehicle is, holding position and altitude: with
+     * DO_PAUSE_CONTINUE where the autopilot supports it (ArduCopter), by switching to the hold
+     * mode otherwise. [continueMission] resumes at the same item either way.
+     */
+    public suspend fun pauseMission() {
+        try {
+            command(VehicleCommand(MAV_CMD_DO_PAUSE_CONTINUE, param1 = 0f))
+            pausedByCommand = true
+        } catch (e: CommandRejected) {
+            if (e.result != CommandResult.UNSUPPORTED) throw e
+            hold()
+            pausedByCommand = false
+        }
+    }
+
+    /** Resumes a mission paused by [pauseMission] (or held in a hold mode) at the item it was on. */
+    public suspend fun continueMission() {
+        val mission = role(ModeRole.MISSION)
+        val inMission = vehicle.telemetry.mode.value?.name == mission
+        if (pausedByCommand == true || (pausedByCommand == null && inMission)) {
+            command(VehicleCommand(MAV_CMD_DO_PAUSE_CONTINUE, param1 = 1f))
+        } else {
+            setMode(mission)
+        }
+        pausedByCommand = null
+    }
+
+    /**
+     * Starts the uploaded mission at item [first] (MISSION_START) and waits for the mission mode.
+     * The vehicle must be armed; an ArduPilot copter's mission must begin with a takeoff.
+     */
+    public suspend fun startMission(first: Int = 0) {
+        require(first >= 0) { "first must be ≥ 0, was $first" }
+        command(VehicleCommand(MAV_CMD_MISSION_START, param1 = first.toFloat(), param2 = 0f))
+        confirmMode("start mission", ModeRole.MISSION)
+    }
+
+    /** Sets the [kind] speed (DO_CHANGE_SPEED) for the current flight and mission. */
+    public suspend fun setSpeed(speed: Speed, kind: SpeedKind = SpeedKind.GROUND) {
+        require(speed.metersPerSecond > 0 && speed.metersPerSecond <= 100) { "speed must be in (0, 100] m/s, was $speed" }
+        command(VehicleCommand(MAV_CMD_DO_CHANGE_SPEED, param1 = kind.mavValue.toFloat(), param2 = speed.metersPerSecond.toFloat(), param3 = -1f))
+    }
+
+    /** Sets home to [location] (altitude above sea level), or to where the vehicle is when null. */
+    public suspend fun setHome(location: Location? = null) {
+        command(
+            if (location == null) {
+                VehicleCommand(MAV_CMD_DO_SET_HOME, param1 = 1f)
+            } else {
+                VehicleCommand(MAV_CMD_DO_SET_HOME, param5 = location.latitude, param6 = location.longitude, param7 = location.altitude.meters.toFloat(), frame = MAV_FRAME_GLOBAL)
+            },
+        )
+    }
+
+    /** Asks the vehicle to send message [messageId] every [interval]; null stops it. */
+    public suspend fun setMessageInterval(messageId: Int, interval: Duration?) {
+        require(messageId in 0..0xFFFFFF) { "messageId must be in 0..16777215, was $messageId" }
+        require(interval == null || interval.isPositive()) { "interval must be > 0, was $interval" }
+        val micros = interval?.inWholeMicroseconds?.toFloat() ?: -1f
+        command(VehicleCommand(MAV_CMD_SET_MESSAGE_INTERVAL, param1 = messageId.toFloat(), param2 = micros))
+    }
+
+    /** Waits until the vehicle reports itself on the ground and disarmed. */
+    public suspend fun awaitLanded(timeout: Duration = 5.minutes) {
+        confirm("landing", "on the ground and disarmed", combine(vehicle.telemetry.landedState, vehicle.telemetry.armed) { l, a -> l to a }, timeout) {
+            it.first == LandedState.ON_GROUND && !it.second
+        }
+    }
+
+    /** Waits until the vehicle is within [within] of [target] horizontally and vertically. */
+    public suspend fun awaitArrival(target: Location, within: Distance = 2.m, timeout: Duration = 5.minutes) {
+        confirm("arrival at $target", "within $within", vehicle.telemetry.position, timeout) { p ->
+            p != null && p.location.copy(altitude = target.altitude).distanceTo(target).meters <= within.meters &&
+                kotlin.math.abs(p.location.altitude.meters - target.altitude.meters) <= within.meters
+        }
+    }
+
+    private suspend fun command(command: VehicleCommand) {
+        vehicle.commands.send(command)
+    }
+
+    private fun airframe(): Pair<Autopilot, VehicleType> = vehicle.identity.value.let { it.autopilot to it.type }
+
+    private fun isPlane(type: VehicleType) = type == VehicleType.FIXED_WING || type == VehicleType.VTOL
+
+    private fun role(role: ModeRole): String {
+        val (autopilot, type) = airframe()
+        return FlightModes.forRole(autopilot, type, role)
+            ?: throw ActionUnsupported(role.name.lowercase(), "$autopilot ${type.name.lowercase()} has no mode for it")
+    }
+
+    private fun homeAltitude(): Double? =
+        vehicle.telemetry.home.value?.altitude?.meters
+            ?: vehicle.telemetry.position.value?.let { it.location.altitude.meters - it.relativeAltitude.meters }
+
+    private suspend fun confirmMode(action: String, role: ModeRole) {
+        val name = role(role)
+        confirm(action, "mode $name", vehicle.telemetry.mode) { it?.name == name }
+    }
+
+    private suspend fun <T> confirm(action: String, expected: String, state: StateFlow<T>, timeout: Duration = confirmTimeout, ok: (T) -> Boolean) =
+        confirm(action, expected, state as kotlinx.coroutines.flow.Flow<T>, timeout, ok)
+
+    /** Waits for [ok] on [state]; fails on timeout with the last value seen, or when the vehicle is lost. */
+    private suspend fun <T> confirm(action: String, expected: String, state: kotlinx.coroutines.flow.Flow<T>, timeout: Duration, ok: (T) -> Boolean) {
+        var last: T? = null
+        val outcome = withTimeoutOrNull(timeout) {
+            combine(state, vehicle.connection) { value, connection -> value to connection }
+                .first { (value, connection) ->
+                    last = value
+                    ok(value) || connection == ConnectionState.LOST
+                }
+        } ?: throw ActionNotConfirmed(action, expected, last.toString(), timeout)
+        if (!ok(outcome.first)) throw VehicleLost(vehicle.systemId, action)
+    }
+
+    private companion object {
+        const val MAV_CMD_NAV_RETURN_TO_LAUNCH = 20
+        const val MAV_CMD_NAV_LAND = 21
+        const val MAV_CMD_NAV_TAKEOFF = 22
+        const val MAV_CMD_DO_SET_MODE = 176
+        const val MAV_CMD_DO_CHANGE_SPEED = 178
+        const val MAV_CMD_DO_SET_HOME = 179
+        const val MAV_CMD_DO_LAND_START = 189
+        const val MAV_CMD_DO_REPOSITION = 192
+        const val MAV_CMD_DO_PAUSE_CONTINUE = 193
+        const val MAV_CMD_MISSION_START = 300
+        const val MAV_CMD_COMPONENT_ARM_DISARM = 400
+        const val MAV_CMD_SET_MESSAGE_INTERVAL = 511
+
+        /** MAV_FRAME_GLOBAL_INT: altitude above mean sea level, lat/lon as degrees × 10⁷. */
+        const val MAV_FRAME_GLOBAL = 5
+        const val CUSTOM_MODE_ENABLED = 1f
+        /** MAV_DO_REPOSITION_FLAGS_CHANGE_MODE. */
+        const val REPOSITION_CHANGE_MODE = 1f
+        /** param2 of COMPONENT_ARM_DISARM that overrides checks (ArduPilot and PX4). */
+        const val FORCE_MAGIC = 21196f
+    }
+}

@@ -1,0 +1,113 @@
+package pod.mavlink.command
+
+import io.dronefleet.mavlink.common.Statustext
+import kotlinx.coroutines.CoroutineStart
+import kotlinx.coroutines.channels.Channel
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.selects.onTimeout
+import kotlinx.coroutines.selects.select
+import kotlinx.coroutines.sync.Mutex
+import kotlinx.coroutines.sync.withLock
+import pod.core.vehicle.ConnectionState
+import pod.core.vehicle.VehicleLost
+import pod.mavlink.MavlinkVehicle
+import kotlin.time.Duration.Companion.nanoseconds
+import kotlin.time.TimeSource
+
+/**
+ * Sends commands to one vehicle and waits for their answers (COMMAND_LONG / COMMAND_INT and
+ * COMMAND_ACK).
+ *
+ * An acknowledgement names only the command, so two exchanges of the same MAV_CMD cannot be told
+ * apart: those queue, while different commands run at once. [send] returns when the vehicle
+ * accepted the command and throws [CommandRejected], [CommandTimeout] or [VehicleLost] otherwise.
+ */
+public class CommandService internal constructor(
+    private val vehicle: MavlinkVehicle,
+    /** Timeouts of every command to this vehicle. */
+    public var timing: CommandTiming = CommandTiming(),
+) {
+    private val locks = HashMap<Int, Mutex>()
+    private var roundTrip: CommandRoundTrip? = null
+    private var roundTripTiming: CommandTiming? = null
+
+    /**
+     * Sends [command] and suspends until the vehicle accepted it; reports IN_PROGRESS percentages
+     * to [onProgress]. Returns the vehicle's reply (its `result_param2` means something for a few
+     * commands).
+     */
+    public suspend fun send(command: VehicleCommand, onProgress: (Int?) -> Unit = {}): CommandReply =
+        lockFor(command.command).withLock { exchange(command, onProgress) }
+
+    private fun lockFor(command: Int): Mutex = synchronized(locks) { locks.getOrPut(command) { Mutex() } }
+
+    private fun roundTrip(): CommandRoundTrip = synchronized(locks) {
+        val current = timing
+        if (roundTripTiming != current) {
+            roundTrip = CommandRoundTrip(current)
+            roundTripTiming = current
+        }
+        roundTrip!!
+    }
+
+    private suspend fun exchange(command: VehicleCommand, onProgress: (Int?) -> Unit): CommandReply = coroutineScope {
+        val clock = TimeSource.Monotonic.markNow()
+        fun now() = clock.elapsedNow().inWholeNanoseconds
+        val identity = vehicle.identity.value
+        val ourSystem = vehicle.station.config.systemId
+        val machine = CommandTransaction(command, timing, roundTrip())
+        val replies = Channel<CommandReply>(Channel.UNLIMITED)
+        val texts = ArrayList<String>()
+        val listening = launch(start = CoroutineStart.UNDISPATCHED) {
+            vehicle.messages.collect { inbound ->
+                val message = inbound.message ?: return@collect
+                if (message is Statustext) {
+                    if (message.severity().value() <= MAV_SEVERITY_WARNING) synchronized(texts) { texts += message.text() }
+                    return@collect
+                }
+                if (inbound.frame.componentId != identity.componentId) return@collect
+                val ack = message as? io.dronefleet.mavlink.common.CommandAck ?: return@collect
+                // Older autopilots leave the target empty (0); anything else must be us.
+                if (ack.targetSystem() != 0 && ack.targetSystem() != ourSystem) return@collect
+                CommandWire.reply(ack)?.takeIf { it.command == command.command }?.let { replies.trySend(it) }
+            }
+        }
+        val lost = launch(start = CoroutineStart.UNDISPATCHED) {
+            vehicle.connection.first { it == ConnectionState.LOST }
+            replies.close(VehicleLost(identity.systemId, command.label))
+        }
+        try {
+            var step = machine.start(now())
+            while (true) {
+                if (step.confirmation >= 0) {
+                    vehicle.send(CommandWire.encode(command, identity.systemId, identity.componentId, step.confirmation))
+                }
+                val outcome = step.outcome
+                if (outcome != null) {
+                    val error = machine.error(outcome, synchronized(texts) { texts.toList() })
+                    if (error != null) throw error
+                    return@coroutineScope (outcome as CommandTransaction.Outcome.Accepted).reply
+                }
+                val wait = (step.wakeAt - now()).coerceAtLeast(0)
+                step = select {
+                    replies.onReceive { reply ->
+                        machine.onReply(reply, now()).also { if (reply.result == CommandResult.IN_PROGRESS) onProgress(machine.progress) }
+                    }
+                    if (step.wakeAt != Long.MAX_VALUE) onTimeout(wait.nanoseconds) { machine.onTimer(now()) }
+                }
+            }
+            @Suppress("UNREACHABLE_CODE")
+            error("unreachable")
+        } finally {
+            listening.cancel()
+            lost.cancel()
+        }
+    }
+
+    private companion object {
+        /** Texts up to this severity explain a refusal; notices and info are chatter. */
+        const val MAV_SEVERITY_WARNING = 4
+    }
+}

@@ -1,0 +1,70 @@
+package pod.mavlink.command
+
+import io.dronefleet.mavlink.common.CommandAck
+import io.dronefleet.mavlink.common.CommandInt
+import io.dronefleet.mavlink.common.CommandLong
+import io.dronefleet.mavlink.common.MavCmd
+import io.dronefleet.mavlink.common.MavFrame
+import io.dronefleet.mavlink.common.MavResult
+import io.dronefleet.mavlink.util.EnumValue
+import kotlin.math.roundToLong
+
+/** Translates [VehicleCommand]s to COMMAND_LONG / COMMAND_INT and COMMAND_ACK to [CommandReply]. */
+public object CommandWire {
+    private val globalFrames = setOf(0, 3, 5, 6, 10, 11)
+
+    /** The COMMAND_LONG or COMMAND_INT for [command], addressed to ([targetSystem], [targetComponent]). */
+    public fun encode(command: VehicleCommand, targetSystem: Int, targetComponent: Int, confirmation: Int = 0): Any {
+        val frame = command.frame ?: return CommandLong.builder()
+            .targetSystem(targetSystem).targetComponent(targetComponent)
+            .command(EnumValue.create<MavCmd>(command.command)).confirmation(confirmation)
+            .param1(command.param1).param2(command.param2).param3(command.param3).param4(command.param4)
+            .param5(command.param5.toFloat()).param6(command.param6.toFloat()).param7(command.param7)
+            .build()
+        val scale = if (frame in globalFrames) 1e7 else 1.0
+        return CommandInt.builder()
+            .targetSystem(targetSystem).targetComponent(targetComponent)
+            .frame(EnumValue.create<MavFrame>(frame)).command(EnumValue.create<MavCmd>(command.command))
+            .param1(command.param1).param2(command.param2).param3(command.param3).param4(command.param4)
+            .x((command.param5 * scale).roundToLong().toInt()).y((command.param6 * scale).roundToLong().toInt())
+            .z(command.param7)
+            .build()
+    }
+
+    /** The command an incoming COMMAND_LONG or COMMAND_INT carries (the inverse of [encode]), or null. */
+    public fun decode(message: Any): VehicleCommand? = when (message) {
+        is CommandLong -> VehicleCommand(
+            message.command().value(), message.param1(), message.param2(), message.param3(), message.param4(),
+            message.param5().toDouble(), message.param6().toDouble(), message.param7(),
+        )
+        is CommandInt -> {
+            val frame = message.frame().value()
+            val scale = if (frame in globalFrames) 1e-7 else 1.0
+            VehicleCommand(
+                message.command().value(), message.param1(), message.param2(), message.param3(), message.param4(),
+                message.x() * scale, message.y() * scale, message.z(), frame,
+            )
+        }
+        else -> null
+    }
+
+    /** The reply a COMMAND_ACK carries, or null for any other message. */
+    public fun reply(message: Any): CommandReply? = (message as? CommandAck)?.let { ack ->
+        CommandReply(
+            command = ack.command().value(),
+            resultCode = ack.result().value(),
+            progress = ack.progress().takeIf { it in 0..100 },
+            resultParam2 = ack.resultParam2(),
+        )
+    }
+
+    /** A COMMAND_ACK answering [command] with [result] to ([targetSystem], [targetComponent]). */
+    public fun ack(command: Int, result: CommandResult, targetSystem: Int, targetComponent: Int, progress: Int? = null): CommandAck =
+        CommandAck.builder()
+            .command(EnumValue.create<MavCmd>(command))
+            .result(EnumValue.create<MavResult>(result.mavValue))
+            .progress(progress ?: if (result == CommandResult.IN_PROGRESS) 255 else 0)
+            .targetSystem(targetSystem)
+            .targetComponent(targetComponent)
+            .build()
+}

@@ -1,0 +1,134 @@
+package pod.mavlink.param
+
+import io.dronefleet.mavlink.common.MavParamType
+import io.dronefleet.mavlink.common.ParamRequestRead
+import io.dronefleet.mavlink.common.ParamSet
+import io.dronefleet.mavlink.common.ParamValue
+import io.dronefleet.mavlink.util.EnumValue
+import kotlinx.coroutines.CoroutineStart
+import kotlinx.coroutines.channels.Channel
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.selects.onTimeout
+import kotlinx.coroutines.selects.select
+import kotlinx.coroutines.sync.Mutex
+import kotlinx.coroutines.sync.withLock
+import pod.core.vehicle.Autopilot
+import pod.core.vehicle.ConnectionState
+import pod.core.vehicle.VehicleLost
+import pod.mavlink.MavlinkVehicle
+import pod.mavlink.command.CommandRoundTrip
+import pod.mavlink.command.CommandTiming
+import kotlin.time.Duration.Companion.nanoseconds
+import kotlin.time.TimeSource
+
+/**
+ * Reads and writes one vehicle's parameters (PARAM_REQUEST_READ, PARAM_SET, answered by
+ * PARAM_VALUE), decoding integers the way the vehicle's autopilot encodes them.
+ *
+ * One exchange at a time per vehicle. Failures are [ParamTimeout], [ParamRejected] and [VehicleLost].
+ */
+public class ParamService internal constructor(
+    private val vehicle: MavlinkVehicle,
+    /** Attempt timeouts and the silence after which an exchange fails. */
+    public var timing: CommandTiming = CommandTiming(),
+) {
+    private val exclusive = Mutex()
+    private val types = HashMap<String, ParamType>()
+    private var roundTrip: CommandRoundTrip? = null
+    private var roundTripTiming: CommandTiming? = null
+
+    /** How this vehicle packs integers into PARAM_VALUE: by value on ArduPilot, bit for bit elsewhere. */
+    public val encoding: ParamEncoding
+        get() = if (vehicle.identity.value.autopilot == Autopilot.ARDUPILOT) ParamEncoding.CAST else ParamEncoding.BYTEWISE
+
+    /** Reads parameter [name] (case-sensitive, at most 16 characters). */
+    public suspend fun read(name: String): Parameter {
+        checkName(name)
+        return exclusive.withLock { exchange(name, null, null) }
+    }
+
+    /**
+     * Writes [value] to parameter [name] and returns it as the vehicle then reports it. The
+     * parameter's type is read from the vehicle first unless it is known from an earlier exchange.
+     */
+    public suspend fun write(name: String, value: Double): Parameter {
+        checkName(name)
+        require(value.isFinite()) { "value must be finite, was $value" }
+        return exclusive.withLock {
+            val type = synchronized(types) { types[name] } ?: exchange(name, null, null).type
+            exchange(name, value, type)
+        }
+    }
+
+    private fun checkName(name: String) {
+        require(name.isNotEmpty() && name.length <= 16) { "a parameter name has 1..16 characters, was \"$name\"" }
+    }
+
+    private fun roundTrip(): CommandRoundTrip {
+        val current = timing
+        if (roundTripTiming != current) {
+            roundTrip = CommandRoundTrip(current)
+            roundTripTiming = current
+        }
+        return roundTrip!!
+    }
+
+    private suspend fun exchange(name: String, writing: Double?, type: ParamType?): Parameter = coroutineScope {
+        val clock = TimeSource.Monotonic.markNow()
+        fun now() = clock.elapsedNow().inWholeNanoseconds
+        val identity = vehicle.identity.value
+        val encoding = encoding
+        val machine = ParamExchange(name, writing, type, timing, roundTrip())
+        val values = Channel<Parameter>(Channel.UNLIMITED)
+        val listening = launch(start = CoroutineStart.UNDISPATCHED) {
+            vehicle.messages.collect { inbound ->
+                val message = inbound.message as? ParamValue ?: return@collect
+                if (inbound.frame.componentId != identity.componentId) return@collect
+                decode(message, encoding)?.let { values.trySend(it) }
+            }
+        }
+        val lost = launch(start = CoroutineStart.UNDISPATCHED) {
+            vehicle.connection.first { it == ConnectionState.LOST }
+            values.close(VehicleLost(identity.systemId, "parameter $name"))
+        }
+        try {
+            var step = machine.start(now())
+            while (true) {
+                if (step.send) vehicle.send(request(name, writing, type, encoding, identity.systemId, identity.componentId))
+                step.error?.let { throw it }
+                step.result?.let { result ->
+                    synchronized(types) { types[name] = result.type }
+                    return@coroutineScope result
+                }
+                val wait = (step.wakeAt - now()).coerceAtLeast(0)
+                step = select {
+                    values.onReceive { machine.onValue(it, now()) }
+                    if (step.wakeAt != Long.MAX_VALUE) onTimeout(wait.nanoseconds) { machine.onTimer(now()) }
+                }
+            }
+            @Suppress("UNREACHABLE_CODE")
+            error("unreachable")
+        } finally {
+            listening.cancel()
+            lost.cancel()
+        }
+    }
+
+    private fun request(name: String, writing: Double?, type: ParamType?, encoding: ParamEncoding, system: Int, component: Int): Any =
+        if (writing == null || type == null) {
+            ParamRequestRead.builder().targetSystem(system).targetComponent(component).paramId(name).paramIndex(-1).build()
+        } else {
+            ParamSet.builder().targetSystem(system).targetComponent(component).paramId(name)
+                .paramValue(encoding.encode(writing, type)).paramType(EnumValue.create<MavParamType>(type.mavValue)).build()
+        }
+
+    internal companion object {
+        /** The parameter a PARAM_VALUE reports, or null when its type is not one MAVLink defines. */
+        fun decode(message: ParamValue, encoding: ParamEncoding): Parameter? {
+            val type = ParamType.of(message.paramType().value()) ?: return null
+            return Parameter(message.paramId().trimEnd('\u0000'), encoding.decode(message.paramValue(), type), type, message.paramIndex(), message.paramCount())
+        }
+    }
+}

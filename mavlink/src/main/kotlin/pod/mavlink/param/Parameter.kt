@@ -1,0 +1,85 @@
+package pod.mavlink.param
+
+/** MAV_PARAM_TYPE: how a parameter's value is stored on the vehicle. */
+public enum class ParamType(
+    /** The number on the wire. */
+    public val mavValue: Int,
+) {
+    /** 8-bit unsigned integer. */
+    UINT8(1),
+    /** 8-bit signed integer. */
+    INT8(2),
+    /** 16-bit unsigned integer. */
+    UINT16(3),
+    /** 16-bit signed integer. */
+    INT16(4),
+    /** 32-bit unsigned integer. */
+    UINT32(5),
+    /** 32-bit signed integer. */
+    INT32(6),
+    /** 64-bit unsigned integer (cannot travel in PARAM_VALUE's float). */
+    UINT64(7),
+    /** 64-bit signed integer (cannot travel in PARAM_VALUE's float). */
+    INT64(8),
+    /** 32-bit float. */
+    REAL32(9),
+    /** 64-bit float (cannot travel in PARAM_VALUE's float). */
+    REAL64(10),
+    ;
+
+    /** True for the integer types. */
+    public val isInteger: Boolean get() = this != REAL32 && this != REAL64
+
+    public companion object {
+        /** The type with number [value], or null for a number MAVLink does not define. */
+        public fun of(value: Int): ParamType? = entries.firstOrNull { it.mavValue == value }
+    }
+}
+
+/**
+ * How integers travel in PARAM_VALUE's float field. ArduPilot converts the number ([CAST]: an
+ * INT32 of 5 arrives as 5.0f); PX4 copies the bits ([BYTEWISE]: the float's four bytes are the
+ * integer's), which is why a ground station must know whom it talks to.
+ */
+public enum class ParamEncoding {
+    /** The float holds the numeric value (ArduPilot). */
+    CAST,
+
+    /** The float's bits are the integer's bits (PX4 and most others). */
+    BYTEWISE,
+    ;
+
+    /** The value the float [wire] of [type] stands for. */
+    public fun decode(wire: Float, type: ParamType): Double {
+        if (this == CAST || !type.isInteger) return wire.toDouble()
+        val bits = wire.toRawBits()
+        return when (type) {
+            ParamType.UINT8 -> (bits and 0xFF).toDouble()
+            ParamType.INT8 -> bits.toByte().toDouble()
+            ParamType.UINT16 -> (bits and 0xFFFF).toDouble()
+            ParamType.INT16 -> bits.toShort().toDouble()
+            ParamType.UINT32 -> (bits.toLong() and 0xFFFF_FFFFL).toDouble()
+            else -> bits.toDouble()
+        }
+    }
+
+    /** The float that carries [value] of [type]. */
+    public fun encode(value: Double, type: ParamType): Float {
+        if (this == CAST || !type.isInteger) return value.toFloat()
+        return Float.fromBits(value.toLong().toInt())
+    }
+}
+
+/** A parameter as the vehicle reported it (PARAM_VALUE). */
+public data class Parameter(
+    /** Its name, up to 16 characters. */
+    public val name: String,
+    /** Its value (integers exactly). */
+    public val value: Double,
+    /** How the vehicle stores it. */
+    public val type: ParamType,
+    /** Its position in the vehicle's list. */
+    public val index: Int,
+    /** How many parameters the vehicle has. */
+    public val count: Int,
+)

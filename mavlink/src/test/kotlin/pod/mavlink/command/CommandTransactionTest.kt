@@ -1,0 +1,158 @@
+package pod.mavlink.command
+
+import io.kotest.assertions.throwables.shouldThrow
+import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.collections.shouldContainExactly
+import io.kotest.matchers.longs.shouldBeLessThanOrEqual
+import io.kotest.matchers.shouldBe
+import io.kotest.matchers.types.shouldBeInstanceOf
+import kotlin.random.Random
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
+
+private const val ARM = 400
+private val MS = 1.milliseconds.inWholeNanoseconds
+
+private fun transaction(timing: CommandTiming = CommandTiming()) =
+    CommandTransaction(VehicleCommand(ARM, param1 = 1f), timing, CommandRoundTrip(timing))
+
+private fun reply(result: CommandResult, progress: Int? = null, command: Int = ARM) = CommandReply(command, result.mavValue, progress)
+
+class CommandTransactionTest : StringSpec({
+
+    "an accepted command is sent once and ends with the vehicle's reply" {
+        val t = transaction()
+        t.start(0).confirmation shouldBe 0
+        val end = t.onReply(reply(CommandResult.ACCEPTED), 3 * MS)
+        end.outcome.shouldBeInstanceOf<CommandTransaction.Outcome.Accepted>()
+        end.confirmation shouldBe -1
+        t.onReply(reply(CommandResult.DENIED), 4 * MS).outcome shouldBe null // a late duplicate changes nothing
+    }
+
+    "without an answer it resends with confirmation counting up, waits longer each time, and fails when silence reaches the timeout" {
+        val timing = CommandTiming()
+        val t = transaction(timing)
+        var step = t.start(0)
+        val confirmations = mutableListOf(step.confirmation)
+        val waits = mutableListOf<Long>()
+        var now = 0L
+        while (step.outcome == null) {
+            waits += step.wakeAt - now
+            now = step.wakeAt
+            step = t.onTimer(now)
+            if (step.confirmation >= 0) confirmations += step.confirmation
+        }
+        confirmations shouldContainExactly confirmations.indices.toList()
+        now shouldBe timing.timeout.inWholeNanoseconds
+        waits.first() shouldBe timing.initialAttemptTimeout.inWholeNanoseconds
+        waits.dropLast(1).zipWithNext().all { (a, b) -> b >= a } shouldBe true
+        waits.max() shouldBeLessThanOrEqual timing.maxAttemptTimeout.inWholeNanoseconds
+        val error = t.error(step.outcome!!, emptyList())
+        error.shouldBeInstanceOf<CommandTimeout>().attempts shouldBe confirmations.size
+    }
+
+    "DENIED, UNSUPPORTED and FAILED end the command at once with the vehicle's texts" {
+        for (result in listOf(CommandResult.DENIED, CommandResult.UNSUPPORTED, CommandResult.FAILED, CommandResult.CANCELLED)) {
+            val t = transaction()
+            t.start(0)
+            val end = t.onReply(reply(result), MS)
+            val error = t.error(end.outcome!!, listOf("Arm: Battery below minimum"))
+            error.shouldBeInstanceOf<CommandRejected>().result shouldBe result
+            error.message shouldBe "MAV_CMD_COMPONENT_ARM_DISARM was ${result.name}: Arm: Battery below minimum"
+        }
+    }
+
+    "IN_PROGRESS stops resending, reports progress, and waits for the final result" {
+        val timing = CommandTiming(inProgressTimeout = 5.seconds)
+        val t = transaction(timing)
+        t.start(0)
+        val working = t.onReply(reply(CommandResult.IN_PROGRESS, 20), 2 * MS)
+        working.confirmation shouldBe -1
+        t.progress shouldBe 20
+        working.wakeAt shouldBe 2 * MS + 5.seconds.inWholeNanoseconds
+        t.onReply(reply(CommandResult.IN_PROGRESS, 70), 3.seconds.inWholeNanoseconds)
+        t.progress shouldBe 70
+        t.onReply(reply(CommandResult.ACCEPTED), 4.seconds.inWholeNanoseconds).outcome.shouldBeInstanceOf<CommandTransaction.Outcome.Accepted>()
+
+        val stalled = transaction(timing)
+        stalled.start(0)
+        val wait = stalled.onReply(reply(CommandResult.IN_PROGRESS, 10), MS)
+        val end = stalled.onTimer(wait.wakeAt)
+        stalled.error(end.outcome!!, emptyList()).shouldBeInstanceOf<CommandTimeout>().waitingFor shouldBe "a final result after IN_PROGRESS (10 %)"
+    }
+
+    "TEMPORARILY_REJECTED is retried after the retry delay, and fails once it has lasted the budget" {
+        val timing = CommandTiming(retryDelay = 500.milliseconds, temporarilyRejectedFor = 2.seconds)
+        val t = transaction(timing)
+        t.start(0)
+        var now = MS
+        var step = t.onReply(reply(CommandResult.TEMPORARILY_REJECTED), now)
+        var resends = 0
+        while (step.outcome == null) {
+            step.wakeAt shouldBe now + 500 * MS
+            now = step.wakeAt
+            t.onTimer(now).confirmation shouldBe ++resends
+            now += MS
+            step = t.onReply(reply(CommandResult.TEMPORARILY_REJECTED), now)
+        }
+        resends shouldBe 3
+        t.error(step.outcome!!, emptyList()).shouldBeInstanceOf<CommandRejected>().result shouldBe CommandResult.TEMPORARILY_REJECTED
+
+        val later = transaction(timing)
+        later.start(0)
+        val retry = later.onReply(reply(CommandResult.TEMPORARILY_REJECTED), MS)
+        later.onTimer(retry.wakeAt).confirmation shouldBe 1
+        later.onReply(reply(CommandResult.ACCEPTED), retry.wakeAt + MS).outcome.shouldBeInstanceOf<CommandTransaction.Outcome.Accepted>()
+    }
+
+    "answers to another command are ignored" {
+        val t = transaction()
+        val first = t.start(0)
+        t.onReply(reply(CommandResult.DENIED, command = 176), MS) shouldBe CommandTransaction.Step(wakeAt = first.wakeAt)
+        t.isDone shouldBe false
+    }
+
+    "the attempt timeout follows the measured round trip within its bounds" {
+        val timing = CommandTiming()
+        val rtt = CommandRoundTrip(timing)
+        rtt.attemptTimeoutNanos shouldBe timing.initialAttemptTimeout.inWholeNanoseconds
+        repeat(20) { rtt.sample(2 * MS) }
+        rtt.attemptTimeoutNanos shouldBe timing.minAttemptTimeout.inWholeNanoseconds
+        repeat(50) { rtt.sample(200 * MS) }
+        (rtt.attemptTimeoutNanos in 200 * MS..timing.maxAttemptTimeout.inWholeNanoseconds) shouldBe true
+    }
+
+    "over a link losing 30 % each way, 2000 seeded commands to an answering vehicle are all accepted within the timeout" {
+        val timing = CommandTiming()
+        val rtt = CommandRoundTrip(timing)
+        repeat(2000) { seed ->
+            val random = Random(seed)
+            val t = CommandTransaction(VehicleCommand(ARM), timing, rtt)
+            val latency = 5 * MS
+            val pending = ArrayList<Long>() // arrival times of acks
+            var step = t.start(0)
+            var now = 0L
+            while (step.outcome == null) {
+                if (step.confirmation >= 0 && random.nextDouble() >= 0.3 && random.nextDouble() >= 0.3) pending += now + 2 * latency
+                val nextAck = pending.minOrNull() ?: Long.MAX_VALUE
+                if (nextAck <= step.wakeAt) {
+                    pending.remove(nextAck)
+                    now = nextAck
+                    step = t.onReply(reply(CommandResult.ACCEPTED), now)
+                } else {
+                    now = step.wakeAt
+                    step = t.onTimer(now)
+                }
+            }
+            withClue(seed) { step.outcome.shouldBeInstanceOf<CommandTransaction.Outcome.Accepted>() }
+            now shouldBeLessThanOrEqual timing.timeout.inWholeNanoseconds
+        }
+    }
+
+    "bad timings are refused with the argument named" {
+        shouldThrow<IllegalArgumentException> { CommandTiming(minAttemptTimeout = 0.seconds) }.message shouldBe "minAttemptTimeout must be > 0, was 0s"
+        shouldThrow<IllegalArgumentException> { CommandTiming(timeout = 100.milliseconds) }.message shouldBe "timeout must be ≥ maxAttemptTimeout (1s), was 100ms"
+    }
+})
+
+private inline fun <T> withClue(seed: Int, block: () -> T): T = io.kotest.assertions.withClue("seed $seed") { block() }
