@@ -1,0 +1,153 @@
+package pod.mavlink.command
+
+import io.dronefleet.mavlink.common.CommandLong
+import io.dronefleet.mavlink.common.MavParamType
+import io.dronefleet.mavlink.common.MavSeverity
+import io.dronefleet.mavlink.common.ParamRequestRead
+import io.dronefleet.mavlink.common.ParamSet
+import io.dronefleet.mavlink.common.ParamValue
+import io.dronefleet.mavlink.common.Statustext
+import io.dronefleet.mavlink.util.EnumValue
+import io.kotest.assertions.throwables.shouldThrow
+import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.shouldBe
+import io.kotest.matchers.string.shouldContain
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.async
+import kotlinx.coroutines.awaitAll
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.withTimeout
+import pod.core.vehicle.VehicleLost
+import pod.mavlink.GroundStation
+import pod.mavlink.GroundStationConfig
+import pod.mavlink.MavlinkEnums
+import pod.mavlink.MavlinkVehicle
+import pod.mavlink.param.ParamEncoding
+import pod.mavlink.param.ParamTimeout
+import pod.mavlink.param.ParamType
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
+
+private const val ARM = 400
+
+private fun ack(command: Int, result: CommandResult, progress: Int? = null, target: Int = 255) = CommandWire.ack(command, result, target, 190, progress)
+
+/** Runs [block] with a ground station and one scripted vehicle on loopback. */
+private suspend fun withVehicle(
+    config: GroundStationConfig = GroundStationConfig(streamRates = emptyMap()),
+    autopilot: Int = MavlinkEnums.MAV_AUTOPILOT_ARDUPILOTMEGA,
+    answer: suspend (Any) -> List<Any>,
+    block: suspend CoroutineScope.(MavlinkVehicle, ScriptedVehicle) -> Unit,
+) = coroutineScope {
+    val gcs = GroundStation.open("udpin://127.0.0.1:0", this, config)
+    val vehicle = ScriptedVehicle.start(this, gcs.link.localPort, autopilot = autopilot, answer = answer)
+    try {
+        val seen = withTimeout(5.seconds) { gcs.vehicles.first { 1 in it } }.getValue(1)
+        block(seen, vehicle)
+    } finally {
+        vehicle.close()
+        gcs.close()
+        coroutineContext.cancelChildren()
+    }
+}
+
+private fun kotlin.coroutines.CoroutineContext.cancelChildren() = this[kotlinx.coroutines.Job]?.children?.forEach { it.cancel() }
+
+class CommandServiceSpec : StringSpec({
+
+    "a command whose first sends are lost is resent with confirmation 1, 2 and accepted" {
+        withVehicle(answer = { m -> if (m is CommandLong && m.confirmation() >= 2) listOf(ack(m.command().value(), CommandResult.ACCEPTED)) else emptyList() }) { v, sim ->
+            v.commands.timing = CommandTiming(initialAttemptTimeout = 100.milliseconds)
+            v.commands.send(VehicleCommand(ARM, param1 = 1f)).result shouldBe CommandResult.ACCEPTED
+            sim.commands.value shouldBe listOf(ARM to 0, ARM to 1, ARM to 2)
+        }
+    }
+
+    "a refusal carries the autopilot's STATUSTEXT explanation" {
+        withVehicle(answer = { m ->
+            if (m !is CommandLong) emptyList() else listOf(
+                Statustext.builder().severity(MavSeverity.MAV_SEVERITY_CRITICAL).text("PreArm: Need 3D Fix").build(),
+                Statustext.builder().severity(MavSeverity.MAV_SEVERITY_INFO).text("chatter").build(),
+                ack(m.command().value(), CommandResult.FAILED),
+            )
+        }) { v, _ ->
+            val error = shouldThrow<CommandRejected> { v.commands.send(VehicleCommand(ARM, param1 = 1f)) }
+            error.result shouldBe CommandResult.FAILED
+            error.statusTexts shouldBe listOf("PreArm: Need 3D Fix")
+            error.message shouldBe "MAV_CMD_COMPONENT_ARM_DISARM was FAILED: PreArm: Need 3D Fix"
+        }
+    }
+
+    "IN_PROGRESS reports progress until the final ACCEPTED, without resending" {
+        withVehicle(answer = { m ->
+            if (m !is CommandLong) emptyList() else listOf(
+                ack(241, CommandResult.IN_PROGRESS, 30),
+                ack(241, CommandResult.IN_PROGRESS, 60),
+                ack(241, CommandResult.ACCEPTED),
+            )
+        }) { v, sim ->
+            val progress = mutableListOf<Int?>()
+            v.commands.send(VehicleCommand(241, param3 = 1f)) { progress += it }
+            progress shouldBe listOf(30, 60)
+            sim.commands.value shouldBe listOf(241 to 0)
+        }
+    }
+
+    "acknowledgements addressed to another ground station are not ours" {
+        withVehicle(answer = { m ->
+            if (m !is CommandLong) emptyList() else if (m.confirmation() == 0) listOf(ack(ARM, CommandResult.DENIED, target = 254)) else listOf(ack(ARM, CommandResult.ACCEPTED))
+        }) { v, _ ->
+            v.commands.timing = CommandTiming(initialAttemptTimeout = 100.milliseconds)
+            v.commands.send(VehicleCommand(ARM)).result shouldBe CommandResult.ACCEPTED
+        }
+    }
+
+    "different commands run at once; the same command queues" {
+        withVehicle(answer = { m -> if (m is CommandLong) listOf(ack(m.command().value(), CommandResult.ACCEPTED)) else emptyList() }) { v, sim ->
+            listOf(176, 178, ARM, ARM, 179).map { c -> async { v.commands.send(VehicleCommand(c)) } }.awaitAll()
+                .map { it.command } shouldBe listOf(176, 178, ARM, ARM, 179)
+            sim.commands.value.count { it.first == ARM } shouldBe 2
+        }
+    }
+
+    "a vehicle that never answers fails the command within its timeout; one that falls silent is lost" {
+        withVehicle(
+            config = GroundStationConfig(streamRates = emptyMap(), lostAfter = 500.milliseconds),
+            answer = { emptyList() },
+        ) { v, sim ->
+            v.commands.timing = CommandTiming(timeout = 1.seconds, initialAttemptTimeout = 100.milliseconds, maxAttemptTimeout = 300.milliseconds)
+            val error = shouldThrow<CommandTimeout> { withTimeout(3.seconds) { v.commands.send(VehicleCommand(ARM)) } }
+            error.waitingFor shouldBe "COMMAND_ACK"
+            (error.attempts >= 4) shouldBe true
+            v.commands.timing = CommandTiming(timeout = 60.seconds)
+            sim.silence()
+            shouldThrow<VehicleLost> { withTimeout(5.seconds) { v.commands.send(VehicleCommand(ARM)) } }.message shouldContain "MAV_CMD_COMPONENT_ARM_DISARM"
+        }
+    }
+
+    "parameters: PX4's bytewise integers are read and written exactly; a missing one times out" {
+        val stored = HashMap(mapOf("MAV_SYS_ID" to 1.0, "MPC_XY_CRUISE" to 5.0))
+        val types = mapOf("MAV_SYS_ID" to ParamType.INT32, "MPC_XY_CRUISE" to ParamType.REAL32)
+        fun value(name: String) = ParamValue.builder().paramId(name).paramType(EnumValue.create<MavParamType>(types.getValue(name).mavValue))
+            .paramValue(ParamEncoding.BYTEWISE.encode(stored.getValue(name), types.getValue(name))).paramCount(2).paramIndex(types.keys.indexOf(name)).build()
+        withVehicle(autopilot = MavlinkEnums.MAV_AUTOPILOT_PX4, answer = { m ->
+            when (m) {
+                is ParamRequestRead -> if (m.paramId() in stored) listOf(value(m.paramId())) else emptyList()
+                is ParamSet -> if (m.paramId() in stored) {
+                    stored[m.paramId()] = ParamEncoding.BYTEWISE.decode(m.paramValue(), ParamType.of(m.paramType().value())!!)
+                    listOf(value(m.paramId()))
+                } else emptyList()
+                else -> emptyList()
+            }
+        }) { v, _ ->
+            v.params.encoding shouldBe ParamEncoding.BYTEWISE
+            v.params.read("MAV_SYS_ID").value shouldBe 1.0
+            v.params.write("MAV_SYS_ID", 16_777_217.0).value shouldBe 16_777_217.0 // not representable as a float value
+            stored["MAV_SYS_ID"] shouldBe 16_777_217.0
+            v.params.write("MPC_XY_CRUISE", 7.5).type shouldBe ParamType.REAL32
+            v.params.timing = CommandTiming(timeout = 1.seconds, initialAttemptTimeout = 100.milliseconds)
+            shouldThrow<ParamTimeout> { v.params.read("NO_SUCH_PARAM") }.name shouldBe "NO_SUCH_PARAM"
+        }
+    }
+})

@@ -1,0 +1,87 @@
+package pod.mavlink.command
+
+import io.dronefleet.mavlink.common.CommandLong
+import io.dronefleet.mavlink.minimal.Heartbeat
+import io.dronefleet.mavlink.minimal.MavState
+import io.dronefleet.mavlink.util.EnumValue
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.Job
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.update
+import kotlinx.coroutines.launch
+import pod.mavlink.MavlinkEnums
+import pod.mavlink.SequenceNumbers
+import pod.mavlink.codec.FrameDecoder
+import pod.mavlink.codec.FrameEncoder
+import pod.mavlink.codec.MessageCodec
+import pod.mavlink.link.MavlinkLink
+import kotlin.time.Duration.Companion.milliseconds
+
+/**
+ * A vehicle on a real loopback socket whose answers a test scripts: for every message the ground
+ * station sends it calls [answer] and sends back what that returns. Heartbeats go out every 100 ms
+ * until [silence] is called.
+ */
+class ScriptedVehicle private constructor(
+    private val link: MavlinkLink,
+    private val systemId: Int,
+    private val autopilot: Int,
+    private val answer: suspend (message: Any) -> List<Any>,
+) {
+    private val encoder = FrameEncoder()
+    private val sequences = SequenceNumbers()
+    private var heartbeats: Job? = null
+
+    /** COMMAND_LONGs received: command and confirmation. */
+    val commands = MutableStateFlow<List<Pair<Int, Int>>>(emptyList())
+
+    private fun start(scope: CoroutineScope) {
+        heartbeats = scope.launch {
+            while (true) {
+                send(
+                    Heartbeat.builder().type(EnumValue.create(2)).autopilot(EnumValue.create(autopilot))
+                        .baseMode(EnumValue.create(1)).systemStatus(MavState.MAV_STATE_STANDBY).mavlinkVersion(3).build(),
+                )
+                delay(100.milliseconds)
+            }
+        }
+        scope.launch {
+            val decoder = FrameDecoder()
+            val inbox = kotlinx.coroutines.channels.Channel<Any>(kotlinx.coroutines.channels.Channel.UNLIMITED)
+            launch { for (message in inbox) answer(message).forEach { send(it) } }
+            link.receive { _, bytes ->
+                decoder.feed(bytes) { frame ->
+                    val message = MessageCodec.Default.decode(frame) ?: return@feed
+                    if (message is CommandLong && message.command().value() == MavlinkEnums.MAV_CMD_SET_MESSAGE_INTERVAL) return@feed
+                    if (message is Heartbeat) return@feed
+                    if (message is CommandLong) commands.update { it + (message.command().value() to message.confirmation()) }
+                    inbox.trySend(message)
+                }
+            }
+        }
+    }
+
+    /** Stops the heartbeats (and nothing else): the ground station will mark the vehicle lost. */
+    fun silence() {
+        heartbeats?.cancel()
+    }
+
+    suspend fun send(message: Any) {
+        link.sendToAll(encoder.encode(message, systemId, 1, sequences.next(systemId, 1)))
+    }
+
+    fun close() = link.close()
+
+    companion object {
+        /** Opens a vehicle sending to the ground station at [gcsPort] and starts it in [scope]. */
+        suspend fun start(
+            scope: CoroutineScope,
+            gcsPort: Int,
+            systemId: Int = 1,
+            autopilot: Int = MavlinkEnums.MAV_AUTOPILOT_ARDUPILOTMEGA,
+            answer: suspend (message: Any) -> List<Any>,
+        ): ScriptedVehicle =
+            ScriptedVehicle(MavlinkLink.open("udpout://127.0.0.1:$gcsPort"), systemId, autopilot, answer).also { it.start(scope) }
+    }
+}
