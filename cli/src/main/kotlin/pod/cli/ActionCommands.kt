@@ -1,0 +1,121 @@
+package pod.cli
+
+import com.github.ajalt.clikt.core.Context
+import com.github.ajalt.clikt.parameters.arguments.argument
+import com.github.ajalt.clikt.parameters.arguments.convert
+import com.github.ajalt.clikt.parameters.options.flag
+import com.github.ajalt.clikt.parameters.options.option
+import com.github.ajalt.clikt.parameters.types.double
+import com.github.ajalt.clikt.parameters.types.int
+import com.github.ajalt.clikt.parameters.types.restrictTo
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.withTimeoutOrNull
+import pod.core.units.Location
+import pod.core.units.m
+import pod.mavlink.MavlinkVehicle
+import kotlin.time.Duration.Companion.seconds
+
+/**
+ * A one-step vehicle action: does it, waits for the vehicle's confirmation, and ends with a
+ * `done` line naming the action and the vehicle's mode and armed state.
+ */
+internal abstract class ActionCommand(out: Output, name: String, private val summary: String) : VehicleCommandBase(out, name) {
+    override fun help(context: Context): String = summary
+
+    /** Performs the action; returns what to print for people. */
+    protected abstract suspend fun perform(vehicle: MavlinkVehicle): String
+
+    override suspend fun act(vehicle: MavlinkVehicle) {
+        val text = perform(vehicle)
+        val t = vehicle.telemetry
+        finish(
+            "vehicle ${vehicle.systemId}: $text",
+            "action" to commandName, "sysid" to vehicle.systemId, "mode" to t.mode.value?.name, "armed" to t.armed.value,
+            "relative_alt_m" to t.position.value?.relativeAltitude?.meters,
+        )
+    }
+}
+
+internal class ArmCommand(out: Output) : ActionCommand(out, "arm", "Arm the motors and wait until the vehicle reports it armed.") {
+    private val force by option("--force", help = "skip the autopilot's pre-arm checks").flag()
+    override suspend fun perform(vehicle: MavlinkVehicle) = vehicle.action.arm(force).let { "armed" }
+}
+
+internal class DisarmCommand(out: Output) : ActionCommand(out, "disarm", "Disarm the motors and wait until the vehicle reports it disarmed.") {
+    private val force by option("--force", help = "even in flight (a multicopter falls)").flag()
+    override suspend fun perform(vehicle: MavlinkVehicle) = vehicle.action.disarm(force).let { "disarmed" }
+}
+
+internal class ModeCommand(out: Output) : ActionCommand(out, "mode", "Switch flight mode (GUIDED, AUTO, LOITER, RTL…; AUTO.MISSION etc. on PX4).") {
+    private val name by argument(help = "mode name")
+    override suspend fun perform(vehicle: MavlinkVehicle) = vehicle.action.setMode(name).let { "mode ${name.uppercase()}" }
+}
+
+internal class TakeoffCommand(out: Output) : ActionCommand(out, "takeoff", "Take off to ALT metres above home and wait until it is reached (arm first).") {
+    private val altitude by argument("ALT", help = "metres above home").convert { it.toDoubleOrNull()?.takeIf { a -> a > 0 && a <= 10_000 } ?: fail("ALT must be a number in (0, 10000], was $it") }
+    override suspend fun perform(vehicle: MavlinkVehicle) = vehicle.action.takeoff(altitude.m).let { "at ${altitude} m" }
+}
+
+internal class LandCommand(out: Output) : ActionCommand(out, "land", "Land (a plane through its mission's landing sequence).") {
+    private val untilLanded by option("--until-landed", help = "wait for touchdown and disarm").flag()
+    override suspend fun perform(vehicle: MavlinkVehicle): String {
+        vehicle.action.land()
+        if (!untilLanded) return "landing"
+        vehicle.action.awaitLanded()
+        return "landed"
+    }
+}
+
+internal class RtlCommand(out: Output) : ActionCommand(out, "rtl", "Return to launch.") {
+    private val untilLanded by option("--until-landed", help = "wait for touchdown and disarm (multicopters)").flag()
+    override suspend fun perform(vehicle: MavlinkVehicle): String {
+        vehicle.action.returnToLaunch()
+        if (!untilLanded) return "returning"
+        vehicle.action.awaitLanded()
+        return "landed at home"
+    }
+}
+
+internal class GotoCommand(out: Output) : ActionCommand(out, "goto", "Fly to LAT LON at ALT metres above home and hold there.") {
+    private val lat by argument("LAT").double().restrictTo(-90.0..90.0)
+    private val lon by argument("LON").double().restrictTo(-180.0..180.0)
+    private val alt by argument("ALT", help = "metres above home").double().restrictTo(0.0..10_000.0)
+    private val amsl by option("--amsl", help = "ALT is above mean sea level, not above home").flag()
+    private val arrive by option("--arrive", help = "wait until the vehicle is there").flag()
+
+    override suspend fun perform(vehicle: MavlinkVehicle): String {
+        val base = if (amsl) 0.0 else homeAltitude(vehicle)
+        val target = Location(lat, lon, (base + alt).m)
+        vehicle.action.goto(target)
+        if (!arrive) return "going to $lat, $lon"
+        vehicle.action.awaitArrival(target, within = 5.m)
+        return "at $lat, $lon"
+    }
+
+    private suspend fun homeAltitude(vehicle: MavlinkVehicle): Double {
+        val t = vehicle.telemetry
+        val position = withTimeoutOrNull(5.seconds) { t.position.first { it != null } }
+        return t.home.value?.altitude?.meters
+            ?: position?.let { it.location.altitude.meters - it.relativeAltitude.meters }
+            ?: fail("no position from vehicle ${vehicle.systemId} to tell its home altitude; pass --amsl")
+    }
+}
+
+internal class PauseCommand(out: Output) : ActionCommand(out, "pause", "Pause the mission, holding position and altitude.") {
+    override suspend fun perform(vehicle: MavlinkVehicle) = vehicle.action.pauseMission().let { "paused" }
+}
+
+internal class ResumeCommand(out: Output) : ActionCommand(out, "resume", "Continue a paused mission at the item it was on.") {
+    override suspend fun perform(vehicle: MavlinkVehicle) = vehicle.action.continueMission().let { "resumed" }
+}
+
+internal class StartCommand(out: Output) : ActionCommand(out, "start", "Start the uploaded mission (arm first).") {
+    private val from by option("--from", help = "first item").int().restrictTo(0..65535)
+    override suspend fun perform(vehicle: MavlinkVehicle) = vehicle.action.startMission(from ?: 0).let { "mission started" }
+}
+
+/** Every action command, in the order `pod --help` lists them. */
+internal fun actionCommands(out: Output) = listOf(
+    ArmCommand(out), DisarmCommand(out), ModeCommand(out), TakeoffCommand(out), LandCommand(out), RtlCommand(out),
+    GotoCommand(out), PauseCommand(out), ResumeCommand(out), StartCommand(out),
+)
