@@ -23,7 +23,7 @@ import java.nio.file.Files
 import java.util.concurrent.CopyOnWriteArrayList
 import kotlin.io.path.writeText
 
-private class Lines : Output {
+internal class Lines : Output {
     val lines = CopyOnWriteArrayList<String>()
     override fun line(text: String) {
         lines += text
@@ -31,7 +31,7 @@ private class Lines : Output {
 }
 
 /** A UDP port free right now on 127.0.0.1 (the CLI binds it a moment later). */
-private fun freePort(): Int = DatagramSocket(0, InetAddress.getByName("127.0.0.1")).use { it.localPort }
+internal fun freePort(): Int = DatagramSocket(0, InetAddress.getByName("127.0.0.1")).use { it.localPort }
 
 class MissionCliSpec : StringSpec({
 

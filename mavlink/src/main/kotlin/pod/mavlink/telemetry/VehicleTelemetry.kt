@@ -5,9 +5,15 @@ import io.dronefleet.mavlink.common.ExtendedSysState
 import io.dronefleet.mavlink.common.GlobalPositionInt
 import io.dronefleet.mavlink.common.GpsRawInt
 import io.dronefleet.mavlink.common.HomePosition
+import io.dronefleet.mavlink.common.MissionCurrent
+import io.dronefleet.mavlink.common.MissionItemReached
 import io.dronefleet.mavlink.common.SysStatus
 import io.dronefleet.mavlink.minimal.Heartbeat
+import kotlinx.coroutines.channels.BufferOverflow
+import kotlinx.coroutines.flow.MutableSharedFlow
 import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.SharedFlow
+import kotlinx.coroutines.flow.asSharedFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
 import pod.core.units.Location
@@ -38,6 +44,8 @@ public class VehicleTelemetry internal constructor() {
     private val _gps = MutableStateFlow<GpsStatus?>(null)
     private val _systemStatus = MutableStateFlow(0)
     private val _linkQuality = MutableStateFlow(LinkQuality(0, 0))
+    private val _missionCurrent = MutableStateFlow<Int?>(null)
+    private val _itemReached = MutableSharedFlow<Int>(extraBufferCapacity = 256, onBufferOverflow = BufferOverflow.DROP_OLDEST)
 
     /** Global position, relative altitude, heading and velocity (GLOBAL_POSITION_INT). */
     public val position: StateFlow<Position?> = _position.asStateFlow()
@@ -68,6 +76,12 @@ public class VehicleTelemetry internal constructor() {
 
     /** Frames received and lost, from the vehicle's sequence numbers. */
     public val linkQuality: StateFlow<LinkQuality> = _linkQuality.asStateFlow()
+
+    /** The mission item the vehicle is flying or will fly next (MISSION_CURRENT). */
+    public val missionCurrent: StateFlow<Int?> = _missionCurrent.asStateFlow()
+
+    /** Each mission item the vehicle reports reached (MISSION_ITEM_REACHED), as it happens. */
+    public val itemReached: SharedFlow<Int> = _itemReached.asSharedFlow()
 
     internal fun onHeartbeat(identity: VehicleIdentity, heartbeat: Heartbeat) {
         _mode.value = FlightModes.decode(identity.autopilot, identity.type, heartbeat.customMode())
@@ -108,6 +122,8 @@ public class VehicleTelemetry internal constructor() {
             )
             is ExtendedSysState -> _landedState.value =
                 LandedState.entries.getOrElse(message.landedState().value()) { LandedState.UNDEFINED }
+            is MissionCurrent -> _missionCurrent.value = message.seq()
+            is MissionItemReached -> _itemReached.tryEmit(message.seq())
             is GpsRawInt -> _gps.value = GpsStatus(
                 fixType = message.fixType().value(),
                 satellites = message.satellitesVisible().takeIf { it != UNKNOWN_U8 },

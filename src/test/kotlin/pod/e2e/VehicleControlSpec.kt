@@ -1,0 +1,140 @@
+package pod.e2e
+
+import io.kotest.assertions.throwables.shouldThrow
+import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.collections.shouldNotBeEmpty
+import io.kotest.matchers.longs.shouldBeGreaterThan
+import io.kotest.matchers.shouldBe
+import io.kotest.matchers.string.shouldContain
+import io.kotest.matchers.types.shouldBeInstanceOf
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.withTimeout
+import pod.core.units.m
+import pod.core.vehicle.Autopilot
+import pod.core.vehicle.VehicleLost
+import pod.core.vehicle.VehicleType
+import pod.mavlink.GroundStation
+import pod.mavlink.GroundStationConfig
+import pod.mavlink.MavlinkVehicle
+import pod.mavlink.action.UnknownMode
+import pod.mavlink.command.CommandRejected
+import pod.mavlink.command.CommandResult
+import pod.mavlink.command.CommandTimeout
+import pod.mavlink.command.CommandTiming
+import pod.mavlink.command.VehicleCommand
+import pod.sim.SimVehicle
+import pod.sim.SimVehicleConfig
+import pod.sim.fault.LinkFaults
+import pod.sim.fault.LossyRelay
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
+
+/** Runs [block] against one simulated vehicle on loopback. */
+private suspend fun flying(
+    config: SimVehicleConfig,
+    station: GroundStationConfig = GroundStationConfig(),
+    block: suspend (MavlinkVehicle, SimVehicle) -> Unit,
+) = coroutineScope {
+    val gcs = GroundStation.open("udpin://127.0.0.1:0", this, station)
+    val sim = SimVehicle(config.copy(gcs = "udpout://127.0.0.1:${gcs.link.localPort}"))
+    try {
+        sim.start(this)
+        block(Flights.vehicle(gcs, config.systemId), sim)
+    } finally {
+        sim.stop()
+        gcs.close()
+    }
+}
+
+class VehicleControlSpec : StringSpec({
+
+    for ((autopilot, type) in listOf(Autopilot.ARDUPILOT to VehicleType.QUADROTOR, Autopilot.PX4 to VehicleType.QUADROTOR)) {
+        "a ${autopilot.name} copter arms, takes off, goes to a point, lands and disarms, each step confirmed" {
+            flying(SimVehicleConfig(systemId = 41, autopilot = autopilot, type = type, timeScale = 10.0)) { v, _ ->
+                val home = v.telemetry.position.value!!.location
+                v.action.arm()
+                v.telemetry.armed.value shouldBe true
+                v.action.takeoff(15.m)
+                (v.telemetry.position.value!!.relativeAltitude.meters >= 14.0) shouldBe true
+                val target = home.offset(north = 30.m, east = 20.m, up = 15.m)
+                v.action.goto(target)
+                v.action.awaitArrival(target, within = 2.m, timeout = 60.seconds)
+                v.action.land()
+                v.action.awaitLanded(timeout = 60.seconds)
+                v.telemetry.position.value!!.location.distanceTo(target).meters.let { (it < 3.0) shouldBe true }
+            }
+        }
+    }
+
+    "through a relay losing 30 % each way, arm, takeoff, goto and land still succeed" {
+        coroutineScope {
+            val station = GroundStationConfig(lostAfter = 10.seconds)
+            val gcs = GroundStation.open("udpin://127.0.0.1:0", this, station)
+            val faults = LinkFaults(drop = 0.3, delay = 2.milliseconds)
+            val relay = LossyRelay("udpin://127.0.0.1:0", "udpout://127.0.0.1:${gcs.link.localPort}", faults, faults, seed = 11)
+            relay.start(this)
+            val sim = SimVehicle(SimVehicleConfig(systemId = 42, timeScale = 10.0, gcs = "udpout://127.0.0.1:${relay.portA}"))
+            try {
+                sim.start(this)
+                val v = Flights.vehicle(gcs, 42)
+                val home = v.telemetry.position.value!!.location
+                v.action.arm()
+                v.action.takeoff(10.m)
+                val target = home.offset(north = 25.m, east = 0.m, up = 10.m)
+                v.action.goto(target)
+                v.action.awaitArrival(target, within = 2.m, timeout = 60.seconds)
+                v.action.land()
+                v.action.awaitLanded(timeout = 60.seconds)
+                relay.counters.value.aToB.dropped shouldBeGreaterThan 10
+                relay.counters.value.bToA.dropped shouldBeGreaterThan 10
+            } finally {
+                sim.stop()
+                relay.close()
+                gcs.close()
+            }
+        }
+    }
+
+    "refusals are typed: arming with a flat battery says why, takeoff while disarmed fails, an unknown command is unsupported" {
+        flying(SimVehicleConfig(systemId = 43, initialCharge = 0.1)) { v, _ ->
+            val arm = shouldThrow<CommandRejected> { v.action.arm() }
+            arm.result shouldBe CommandResult.FAILED
+            arm.statusTexts.shouldNotBeEmpty()
+            arm.message!! shouldContain "Arm"
+            v.telemetry.armed.value shouldBe false
+
+            shouldThrow<CommandRejected> { v.action.takeoff(10.m) }.command.command shouldBe 22
+            shouldThrow<CommandRejected> { v.commands.send(VehicleCommand(31_000)) }.result shouldBe CommandResult.UNSUPPORTED
+            shouldThrow<UnknownMode> { v.action.setMode("WARP") }.known.contains("GUIDED") shouldBe true
+        }
+    }
+
+    "a vehicle that stopped talking fails a command within its timeout, or as lost once its heartbeat is missed" {
+        flying(SimVehicleConfig(systemId = 44), GroundStationConfig(lostAfter = 30.seconds)) { v, sim ->
+            sim.stop()
+            v.commands.timing = CommandTiming(timeout = 2.seconds)
+            val error = shouldThrow<CommandTimeout> { withTimeout(5.seconds) { v.action.arm() } }
+            error.waitingFor shouldBe "COMMAND_ACK"
+        }
+        flying(SimVehicleConfig(systemId = 45), GroundStationConfig(lostAfter = 1.seconds)) { v, sim ->
+            sim.stop()
+            shouldThrow<VehicleLost> { withTimeout(5.seconds) { v.action.arm() } }.systemId shouldBe 45
+        }
+    }
+
+    "parameters read and write through to the simulated autopilot" {
+        flying(SimVehicleConfig(systemId = 46)) { v, _ ->
+            val speed = v.params.read("WPNAV_SPEED")
+            speed.value shouldBe 500.0
+            v.params.write("WPNAV_SPEED", 800.0).value shouldBe 800.0
+            v.params.read("WPNAV_SPEED").value shouldBe 800.0
+        }
+        flying(SimVehicleConfig(systemId = 47, autopilot = Autopilot.PX4)) { v, _ ->
+            v.params.read("MAV_SYS_ID").let {
+                it.value shouldBe 47.0
+                it.type.isInteger shouldBe true
+            }
+            v.params.read("MPC_XY_CRUISE").value.shouldBeInstanceOf<Double>()
+        }
+    }
+})

@@ -1,0 +1,119 @@
+package pod.e2e
+
+import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.doubles.shouldBeLessThan
+import io.kotest.matchers.shouldBe
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.drop
+import kotlinx.coroutines.flow.filterNotNull
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.flow.take
+import kotlinx.coroutines.flow.toList
+import kotlinx.coroutines.withTimeout
+import pod.core.units.Location
+import pod.core.vehicle.Autopilot
+import pod.core.vehicle.LandedState
+import pod.core.vehicle.VehicleType
+import pod.e2e.Flights.recordReached
+import pod.mavlink.GroundStation
+import pod.sim.SimVehicle
+import pod.sim.SimVehicleConfig
+import kotlin.math.abs
+import kotlin.time.Duration.Companion.seconds
+
+class VehicleFlightSpec : StringSpec({
+
+    "an ArduPilot copter flies takeoff, five waypoints, two loiter turns and RTL in order, and ends landed and disarmed at home" {
+        coroutineScope {
+            val gcs = GroundStation.open("udpin://127.0.0.1:0", this)
+            val sim = SimVehicle(SimVehicleConfig(systemId = 31, timeScale = 20.0, gcs = "udpout://127.0.0.1:${gcs.link.localPort}"))
+            try {
+                sim.start(this)
+                val vehicle = Flights.vehicle(gcs, 31)
+                val home = SimVehicleConfig.DEFAULT_HOME
+                val mission = Flights.copterSurvey(home)
+                vehicle.mission.upload(mission)
+                val (reached, recording) = recordReached(vehicle)
+                vehicle.action.arm()
+                vehicle.action.startMission()
+                vehicle.action.awaitLanded(timeout = 60.seconds)
+                recording.cancel()
+                reached shouldBe (1..8).toList()
+                val end = vehicle.telemetry.position.value!!
+                end.location.distanceTo(home).meters shouldBeLessThan 3.0
+                vehicle.telemetry.landedState.value shouldBe LandedState.ON_GROUND
+                vehicle.telemetry.armed.value shouldBe false
+            } finally {
+                sim.stop()
+                gcs.close()
+            }
+        }
+    }
+
+    "an ArduPilot plane flies its circuit and lands through the landing sequence, disarmed on the runway" {
+        coroutineScope {
+            val gcs = GroundStation.open("udpin://127.0.0.1:0", this)
+            val sim = SimVehicle(SimVehicleConfig(systemId = 32, type = VehicleType.FIXED_WING, timeScale = 20.0, gcs = "udpout://127.0.0.1:${gcs.link.localPort}"))
+            try {
+                sim.start(this)
+                val vehicle = Flights.vehicle(gcs, 32)
+                val home = SimVehicleConfig.DEFAULT_HOME
+                vehicle.mission.upload(Flights.planeCircuit(home))
+                val (reached, recording) = recordReached(vehicle)
+                vehicle.action.arm()
+                vehicle.action.startMission()
+                // In the air it never flies slower than its minimum airspeed.
+                withTimeout(30.seconds) { vehicle.telemetry.landedState.first { it == LandedState.IN_AIR } }
+                vehicle.action.awaitLanded(timeout = 90.seconds)
+                recording.cancel()
+                reached shouldBe listOf(1, 2, 3, 4, 6, 7)
+                vehicle.telemetry.position.value!!.location.distanceTo(home).meters shouldBeLessThan 60.0
+            } finally {
+                sim.stop()
+                gcs.close()
+            }
+        }
+    }
+
+    for (autopilot in listOf(Autopilot.ARDUPILOT, Autopilot.PX4)) {
+        "a ${autopilot.name} copter paused mid-mission holds position and altitude, and continues at the same item" {
+            coroutineScope {
+                val gcs = GroundStation.open("udpin://127.0.0.1:0", this)
+                val sim = SimVehicle(SimVehicleConfig(systemId = 33, autopilot = autopilot, timeScale = 10.0, gcs = "udpout://127.0.0.1:${gcs.link.localPort}"))
+                try {
+                    sim.start(this)
+                    val vehicle = Flights.vehicle(gcs, 33)
+                    val home = SimVehicleConfig.DEFAULT_HOME
+                    vehicle.mission.upload(Flights.copterSurvey(home))
+                    vehicle.action.arm()
+                    vehicle.action.startMission()
+                    withTimeout(60.seconds) { vehicle.telemetry.missionCurrent.first { it == 3 } }
+                    vehicle.action.pauseMission()
+                    // Settled: two position reports in a row (at 4 Hz) less than 0.3 m apart.
+                    val settled = withTimeout(30.seconds) {
+                        var last: Location? = null
+                        vehicle.telemetry.position.filterNotNull().first { p ->
+                            val previous = last
+                            last = p.location
+                            previous != null && previous.distanceTo(p.location).meters < 0.3
+                        }
+                    }
+                    val held = withTimeout(30.seconds) { vehicle.telemetry.position.filterNotNull().drop(1).take(12).toList() }
+                    for (p in held) {
+                        p.location.distanceTo(settled.location).meters shouldBeLessThan 1.0
+                        abs(p.relativeAltitude.meters - settled.relativeAltitude.meters) shouldBeLessThan 0.5
+                    }
+                    vehicle.telemetry.missionCurrent.value shouldBe 3
+                    val (reached, recording) = recordReached(vehicle)
+                    vehicle.action.continueMission()
+                    withTimeout(60.seconds) { vehicle.telemetry.missionCurrent.first { it == 4 } }
+                    recording.cancel()
+                    reached.first() shouldBe 3
+                } finally {
+                    sim.stop()
+                    gcs.close()
+                }
+            }
+        }
+    }
+})
