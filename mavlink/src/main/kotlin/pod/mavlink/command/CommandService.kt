@@ -1,18 +1,13 @@
 package pod.mavlink.command
 
+import io.dronefleet.mavlink.common.CommandAck
 import io.dronefleet.mavlink.common.Statustext
-import kotlinx.coroutines.CoroutineStart
-import kotlinx.coroutines.channels.Channel
-import kotlinx.coroutines.coroutineScope
-import kotlinx.coroutines.flow.first
-import kotlinx.coroutines.launch
 import kotlinx.coroutines.selects.onTimeout
 import kotlinx.coroutines.selects.select
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
-import pod.core.vehicle.ConnectionState
-import pod.core.vehicle.VehicleLost
 import pod.mavlink.MavlinkVehicle
+import pod.mavlink.exchange
 import kotlin.time.Duration.Companion.nanoseconds
 import kotlin.time.TimeSource
 
@@ -22,7 +17,8 @@ import kotlin.time.TimeSource
  *
  * An acknowledgement names only the command, so two exchanges of the same MAV_CMD cannot be told
  * apart: those queue, while different commands run at once. [send] returns when the vehicle
- * accepted the command and throws [CommandRejected], [CommandTimeout] or [VehicleLost] otherwise.
+ * accepted the command and throws [CommandRejected], [CommandTimeout] or
+ * [pod.core.vehicle.VehicleLost] otherwise.
  */
 public class CommandService internal constructor(
     private val vehicle: MavlinkVehicle,
@@ -52,33 +48,26 @@ public class CommandService internal constructor(
         roundTrip!!
     }
 
-    private suspend fun exchange(command: VehicleCommand, onProgress: (Int?) -> Unit): CommandReply = coroutineScope {
+    private suspend fun exchange(command: VehicleCommand, onProgress: (Int?) -> Unit): CommandReply {
         val clock = TimeSource.Monotonic.markNow()
         fun now() = clock.elapsedNow().inWholeNanoseconds
         val identity = vehicle.identity.value
         val ourSystem = vehicle.station.config.systemId
         val machine = CommandTransaction(command, timing, roundTrip())
-        val replies = Channel<CommandReply>(Channel.UNLIMITED)
         val texts = ArrayList<String>()
-        val listening = launch(start = CoroutineStart.UNDISPATCHED) {
-            vehicle.messages.collect { inbound ->
-                val message = inbound.message ?: return@collect
-                if (message is Statustext) {
-                    if (message.severity().value() <= MAV_SEVERITY_WARNING) synchronized(texts) { texts += message.text() }
-                    return@collect
+        return vehicle.exchange(command.label, { inbound ->
+            when (val message = inbound.message) {
+                is Statustext -> {
+                    if (message.severity().value() <= MAV_SEVERITY_WARNING) synchronized(texts) { texts += message.text().trimEnd('\u0000') }
+                    null
                 }
-                if (inbound.frame.componentId != identity.componentId) return@collect
-                val ack = message as? io.dronefleet.mavlink.common.CommandAck ?: return@collect
                 // Older autopilots leave the target empty (0); anything else must be us.
-                if (ack.targetSystem() != 0 && ack.targetSystem() != ourSystem) return@collect
-                CommandWire.reply(ack)?.takeIf { it.command == command.command }?.let { replies.trySend(it) }
+                is CommandAck -> if (inbound.frame.componentId == identity.componentId && message.targetSystem() in setOf(0, ourSystem)) {
+                    CommandWire.reply(message)?.takeIf { it.command == command.command }
+                } else null
+                else -> null
             }
-        }
-        val lost = launch(start = CoroutineStart.UNDISPATCHED) {
-            vehicle.connection.first { it == ConnectionState.LOST }
-            replies.close(VehicleLost(identity.systemId, command.label))
-        }
-        try {
+        }) { replies ->
             var step = machine.start(now())
             while (true) {
                 if (step.confirmation >= 0) {
@@ -86,9 +75,8 @@ public class CommandService internal constructor(
                 }
                 val outcome = step.outcome
                 if (outcome != null) {
-                    val error = machine.error(outcome, synchronized(texts) { texts.toList() })
-                    if (error != null) throw error
-                    return@coroutineScope (outcome as CommandTransaction.Outcome.Accepted).reply
+                    machine.error(outcome, synchronized(texts) { texts.toList() })?.let { throw it }
+                    return@exchange (outcome as CommandTransaction.Outcome.Accepted).reply
                 }
                 val wait = (step.wakeAt - now()).coerceAtLeast(0)
                 step = select {
@@ -100,9 +88,6 @@ public class CommandService internal constructor(
             }
             @Suppress("UNREACHABLE_CODE")
             error("unreachable")
-        } finally {
-            listening.cancel()
-            lost.cancel()
         }
     }
 

@@ -1,23 +1,18 @@
 package pod.mavlink.mission
 
 import kotlinx.coroutines.CancellationException
-import kotlinx.coroutines.CoroutineStart
 import kotlinx.coroutines.NonCancellable
-import kotlinx.coroutines.channels.Channel
-import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.channelFlow
-import kotlinx.coroutines.flow.first
-import kotlinx.coroutines.launch
 import kotlinx.coroutines.selects.onTimeout
 import kotlinx.coroutines.selects.select
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
 import kotlinx.coroutines.withContext
 import pod.core.vehicle.Autopilot
-import pod.core.vehicle.ConnectionState
 import pod.core.vehicle.VehicleLost
 import pod.mavlink.MavlinkVehicle
+import pod.mavlink.exchange
 import pod.mavlink.MessageTargets
 import kotlin.time.Duration.Companion.nanoseconds
 import kotlin.time.TimeSource
@@ -156,59 +151,52 @@ public class MissionService internal constructor(
         onMessage: (MissionMessage, Long) -> MissionStep<T>,
         onTimeout: (Long) -> MissionStep<T>,
         afterEachStep: () -> Unit,
-    ): TransferOutcome<T> = coroutineScope {
+    ): TransferOutcome<T> {
         val clock = TimeSource.Monotonic.markNow()
         fun now() = clock.elapsedNow().inWholeNanoseconds
         val identity = vehicle.identity.value
         val ourSystem = vehicle.station.config.systemId
-        val inbox = Channel<MissionMessage>(Channel.UNLIMITED)
-        val listening = launch(start = CoroutineStart.UNDISPATCHED) {
-            vehicle.messages.collect { inbound ->
-                val message = inbound.message ?: return@collect
-                if (inbound.frame.componentId != identity.componentId) return@collect
-                val target = MessageTargets.targetSystem(message)
-                if (target != null && target != 0 && target != ourSystem) return@collect // another ground station's exchange
-                MissionWire.decode(message)?.let { inbox.trySend(it) }
+        return vehicle.exchange("a ${type.name.lowercase()} transfer", { inbound ->
+            val message = inbound.message
+            val target = message?.let { MessageTargets.targetSystem(it) }
+            when {
+                message == null || inbound.frame.componentId != identity.componentId -> null
+                target != null && target != 0 && target != ourSystem -> null // another ground station's exchange
+                else -> MissionWire.decode(message)
             }
-        }
-        val lost = launch(start = CoroutineStart.UNDISPATCHED) {
-            vehicle.connection.first { it == ConnectionState.LOST }
-            inbox.close(VehicleLost(identity.systemId, "a ${type.name.lowercase()} transfer"))
-        }
-        var deadline = Long.MAX_VALUE
-        var step = start(now())
-        try {
-            while (true) {
-                for (message in step.send) vehicle.send(MissionWire.encode(message, identity.systemId, identity.componentId))
-                when (step.timerNanos) {
-                    MissionStep.KEEP_TIMER -> Unit
-                    MissionStep.NO_TIMER -> deadline = Long.MAX_VALUE
-                    else -> deadline = now() + step.timerNanos
+        }) { inbox ->
+            var deadline = Long.MAX_VALUE
+            var step = start(now())
+            try {
+                while (true) {
+                    for (message in step.send) vehicle.send(MissionWire.encode(message, identity.systemId, identity.componentId))
+                    when (step.timerNanos) {
+                        MissionStep.KEEP_TIMER -> Unit
+                        MissionStep.NO_TIMER -> deadline = Long.MAX_VALUE
+                        else -> deadline = now() + step.timerNanos
+                    }
+                    afterEachStep()
+                    when (val outcome = step.outcome) {
+                        null -> Unit
+                        is TransferOutcome.Failed -> throw outcome.error
+                        else -> return@exchange outcome
+                    }
+                    val wait = deadline - now()
+                    step = select {
+                        inbox.onReceive { onMessage(it, now()) }
+                        if (deadline != Long.MAX_VALUE) onTimeout(wait.coerceAtLeast(0).nanoseconds) { onTimeout(now()) }
+                    }
                 }
-                afterEachStep()
-                when (val outcome = step.outcome) {
-                    null -> Unit
-                    is TransferOutcome.Failed -> throw outcome.error
-                    else -> return@coroutineScope outcome
+                @Suppress("UNREACHABLE_CODE")
+                error("unreachable")
+            } catch (e: CancellationException) {
+                if (cancellable) {
+                    withContext(NonCancellable) {
+                        vehicle.send(MissionWire.encode(MissionMessage.Ack(type, MissionResult.OPERATION_CANCELLED), identity.systemId, identity.componentId))
+                    }
                 }
-                val wait = deadline - now()
-                step = select {
-                    inbox.onReceive { onMessage(it, now()) }
-                    if (deadline != Long.MAX_VALUE) onTimeout(wait.coerceAtLeast(0).nanoseconds) { onTimeout(now()) }
-                }
+                throw e
             }
-            @Suppress("UNREACHABLE_CODE")
-            error("unreachable")
-        } catch (e: CancellationException) {
-            if (cancellable) {
-                withContext(NonCancellable) {
-                    vehicle.send(MissionWire.encode(MissionMessage.Ack(type, MissionResult.OPERATION_CANCELLED), identity.systemId, identity.componentId))
-                }
-            }
-            throw e
-        } finally {
-            listening.cancel()
-            lost.cancel()
         }
     }
 }

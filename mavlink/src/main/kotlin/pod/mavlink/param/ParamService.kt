@@ -5,19 +5,13 @@ import io.dronefleet.mavlink.common.ParamRequestRead
 import io.dronefleet.mavlink.common.ParamSet
 import io.dronefleet.mavlink.common.ParamValue
 import io.dronefleet.mavlink.util.EnumValue
-import kotlinx.coroutines.CoroutineStart
-import kotlinx.coroutines.channels.Channel
-import kotlinx.coroutines.coroutineScope
-import kotlinx.coroutines.flow.first
-import kotlinx.coroutines.launch
 import kotlinx.coroutines.selects.onTimeout
 import kotlinx.coroutines.selects.select
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
 import pod.core.vehicle.Autopilot
-import pod.core.vehicle.ConnectionState
-import pod.core.vehicle.VehicleLost
 import pod.mavlink.MavlinkVehicle
+import pod.mavlink.exchange
 import pod.mavlink.command.CommandRoundTrip
 import pod.mavlink.command.CommandTiming
 import kotlin.time.Duration.Companion.nanoseconds
@@ -27,7 +21,7 @@ import kotlin.time.TimeSource
  * Reads and writes one vehicle's parameters (PARAM_REQUEST_READ, PARAM_SET, answered by
  * PARAM_VALUE), decoding integers the way the vehicle's autopilot encodes them.
  *
- * One exchange at a time per vehicle. Failures are [ParamTimeout], [ParamRejected] and [VehicleLost].
+ * One exchange at a time per vehicle. Failures are [ParamTimeout], [ParamRejected] and [pod.core.vehicle.VehicleLost].
  */
 public class ParamService internal constructor(
     private val vehicle: MavlinkVehicle,
@@ -75,32 +69,23 @@ public class ParamService internal constructor(
         return roundTrip!!
     }
 
-    private suspend fun exchange(name: String, writing: Double?, type: ParamType?): Parameter = coroutineScope {
+    private suspend fun exchange(name: String, writing: Double?, type: ParamType?): Parameter {
         val clock = TimeSource.Monotonic.markNow()
         fun now() = clock.elapsedNow().inWholeNanoseconds
         val identity = vehicle.identity.value
         val encoding = encoding
         val machine = ParamExchange(name, writing, type, timing, roundTrip())
-        val values = Channel<Parameter>(Channel.UNLIMITED)
-        val listening = launch(start = CoroutineStart.UNDISPATCHED) {
-            vehicle.messages.collect { inbound ->
-                val message = inbound.message as? ParamValue ?: return@collect
-                if (inbound.frame.componentId != identity.componentId) return@collect
-                decode(message, encoding)?.let { values.trySend(it) }
-            }
-        }
-        val lost = launch(start = CoroutineStart.UNDISPATCHED) {
-            vehicle.connection.first { it == ConnectionState.LOST }
-            values.close(VehicleLost(identity.systemId, "parameter $name"))
-        }
-        try {
+        return vehicle.exchange("parameter $name", { inbound ->
+            val message = inbound.message as? ParamValue
+            if (message == null || inbound.frame.componentId != identity.componentId) null else decode(message, encoding)
+        }) { values ->
             var step = machine.start(now())
             while (true) {
                 if (step.send) vehicle.send(request(name, writing, type, encoding, identity.systemId, identity.componentId))
                 step.error?.let { throw it }
                 step.result?.let { result ->
                     synchronized(types) { types[name] = result.type }
-                    return@coroutineScope result
+                    return@exchange result
                 }
                 val wait = (step.wakeAt - now()).coerceAtLeast(0)
                 step = select {
@@ -110,9 +95,6 @@ public class ParamService internal constructor(
             }
             @Suppress("UNREACHABLE_CODE")
             error("unreachable")
-        } finally {
-            listening.cancel()
-            lost.cancel()
         }
     }
 

@@ -2,6 +2,7 @@ package pod.mavlink.telemetry
 
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.nulls.shouldBeNull
+import io.kotest.matchers.nulls.shouldNotBeNull
 import io.kotest.matchers.shouldBe
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleType
@@ -36,6 +37,24 @@ class FlightModesTest : StringSpec({
         FlightModes.decode(Autopilot.GENERIC, VehicleType.QUADROTOR, 3).name shouldBe "MODE(3)"
         FlightModes.customMode(Autopilot.ARDUPILOT, VehicleType.FIXED_WING, "ALT_HOLD").shouldBeNull()
         FlightModes.customMode(Autopilot.PX4, VehicleType.QUADROTOR, "POSCTL.MISSION").shouldBeNull()
+    }
+
+    "every mode role names a mode the autopilot has; hold never names a mode that needs sticks" {
+        for (autopilot in listOf(Autopilot.ARDUPILOT, Autopilot.PX4)) {
+            for (type in listOf(VehicleType.QUADROTOR, VehicleType.FIXED_WING)) {
+                for (role in ModeRole.entries) {
+                    val name = FlightModes.forRole(autopilot, type, role)
+                    if (autopilot == Autopilot.ARDUPILOT && type == VehicleType.FIXED_WING && role == ModeRole.LAND) {
+                        name.shouldBeNull()
+                    } else {
+                        FlightModes.customMode(autopilot, type, name!!).shouldNotBeNull()
+                    }
+                }
+            }
+        }
+        FlightModes.forRole(Autopilot.ARDUPILOT, VehicleType.QUADROTOR, ModeRole.HOLD) shouldBe "LOITER"
+        FlightModes.forRole(Autopilot.PX4, VehicleType.QUADROTOR, ModeRole.HOLD) shouldBe "AUTO.LOITER"
+        FlightModes.names(Autopilot.PX4, VehicleType.QUADROTOR).contains("AUTO.MISSION") shouldBe true
     }
 })
 
