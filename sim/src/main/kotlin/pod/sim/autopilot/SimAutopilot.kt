@@ -147,8 +147,11 @@ internal class SimAutopilot(
     }
 
     /** A plane's loiter radius (positive) and direction. */
-    fun loiterRadius(): Pair<Double, Boolean> =
-        if (isPx4) params["NAV_LOITER_RAD"] to true else params["WP_LOITER_RAD"].let { kotlin.math.abs(it) to (it >= 0) }
+    fun loiterRadius(): Pair<Double, Boolean> = when {
+        isPx4 -> params["NAV_LOITER_RAD"] to true
+        multirotor -> 0.0 to true
+        else -> params["WP_LOITER_RAD"].let { kotlin.math.abs(it) to (it >= 0) }
+    }
 
     /** Acceptance radius for waypoints: [requested] when positive, else the flavour's parameter. */
     fun acceptanceRadius(requested: Float): Double {
