@@ -1,6 +1,17 @@
 package pod.sim
 
 import io.dronefleet.mavlink.common.Attitude
+import io.dronefleet.mavlink.common.CameraImageCaptured
+import io.dronefleet.mavlink.common.CommandAck
+import io.dronefleet.mavlink.common.MavCmd
+import io.dronefleet.mavlink.common.MavParamType
+import io.dronefleet.mavlink.common.MavResult
+import io.dronefleet.mavlink.common.MavSeverity
+import io.dronefleet.mavlink.common.MissionCurrent
+import io.dronefleet.mavlink.common.MissionItemReached
+import io.dronefleet.mavlink.common.ParamValue
+import io.dronefleet.mavlink.common.Statustext
+import io.dronefleet.mavlink.common.VfrHud
 import io.dronefleet.mavlink.common.ExtendedSysState
 import io.dronefleet.mavlink.common.GlobalPositionInt
 import io.dronefleet.mavlink.common.GpsFixType
@@ -14,6 +25,9 @@ import io.dronefleet.mavlink.minimal.MavState
 import io.dronefleet.mavlink.util.EnumValue
 import pod.core.vehicle.LandedState
 import pod.mavlink.MavlinkEnums
+import pod.sim.autopilot.SimOutput
+import pod.sim.autopilot.SimParameters
+import pod.sim.autopilot.packVoltage
 import java.math.BigInteger
 import kotlin.math.roundToInt
 import kotlin.math.roundToLong
@@ -31,8 +45,61 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
         MessageIds.GLOBAL_POSITION_INT -> globalPosition(s)
         MessageIds.HOME_POSITION -> home(s)
         MessageIds.EXTENDED_SYS_STATE -> extendedSysState(s)
+        MessageIds.VFR_HUD -> vfrHud(s)
+        MessageIds.MISSION_CURRENT -> missionCurrent(s.missionCurrent)
         else -> null
     }
+
+    /** The message for one of the autopilot's [SimOutput]s. */
+    fun output(out: SimOutput, s: SimState, params: SimParameters): Any = when (out) {
+        is SimOutput.Ack -> CommandAck.builder()
+            .command(EnumValue.create<MavCmd>(out.command))
+            .result(EnumValue.create<MavResult>(out.result))
+            .progress(out.progress)
+            .targetSystem(out.targetSystem)
+            .targetComponent(out.targetComponent)
+            .build()
+        is SimOutput.Text -> Statustext.builder().severity(EnumValue.create<MavSeverity>(out.severity)).text(out.text.take(50)).build()
+        is SimOutput.ItemReached -> MissionItemReached.builder().seq(out.seq).build()
+        is SimOutput.MissionCurrent -> missionCurrent(out.seq)
+        is SimOutput.HomeChanged -> home(s)
+        is SimOutput.Param -> params.at(out.index)!!.let { def ->
+            ParamValue.builder()
+                .paramId(def.name)
+                .paramValue(params.wireValue(out.index))
+                .paramType(EnumValue.create<MavParamType>(def.type.mav))
+                .paramCount(params.count)
+                .paramIndex(out.index)
+                .build()
+        }
+        is SimOutput.Photo -> CameraImageCaptured.builder()
+            .timeBootMs(out.photo.time.inWholeMilliseconds)
+            .timeUtc(BigInteger.ZERO)
+            .cameraId(0)
+            .lat(e7(out.photo.location.latitude))
+            .lon(e7(out.photo.location.longitude))
+            .alt((out.photo.location.altitude.meters * 1000).roundToInt())
+            .relativeAlt(((out.photo.location.altitude.meters - s.home.altitude.meters) * 1000).roundToInt())
+            .q(listOf(1f, 0f, 0f, 0f))
+            .imageIndex(out.photo.index)
+            .captureResult(1)
+            .fileUrl("")
+            .build()
+    }
+
+    /** Total mission items, for MISSION_CURRENT. */
+    var missionTotal: () -> Int = { 0 }
+
+    private fun missionCurrent(seq: Int): MissionCurrent = MissionCurrent.builder().seq(seq).total(missionTotal()).build()
+
+    private fun vfrHud(s: SimState): VfrHud = VfrHud.builder()
+        .airspeed(s.airspeed.toFloat())
+        .groundspeed(s.groundSpeed.toFloat())
+        .heading(s.headingDeg.roundToInt().mod(360))
+        .throttle(s.throttle)
+        .alt(s.location.altitude.meters.toFloat())
+        .climb(s.climbRate.toFloat())
+        .build()
 
     fun heartbeat(s: SimState): Heartbeat = Heartbeat.builder()
         .type(EnumValue.create(MavlinkEnums.mavType(config.type)))
@@ -46,14 +113,14 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
     private fun timeBootMs(): Long = bootedAt.elapsedNow().inWholeMilliseconds and 0xFFFF_FFFFL
 
     private fun sysStatus(s: SimState): SysStatus = SysStatus.builder()
-        .voltageBattery((CELLS * (EMPTY_CELL_V + (FULL_CELL_V - EMPTY_CELL_V) * s.charge) * 1000).roundToInt())
+        .voltageBattery((packVoltage(s.charge) * 1000).roundToInt())
         .currentBattery(if (s.armed) 1500 else 0) // cA: 15 A hovering
         .batteryRemaining((s.charge * 100).roundToInt())
         .build()
 
     private fun gpsRaw(s: SimState): GpsRawInt = GpsRawInt.builder()
         .timeUsec(BigInteger.valueOf(bootedAt.elapsedNow().inWholeMicroseconds))
-        .fixType(GpsFixType.GPS_FIX_TYPE_3D_FIX)
+        .fixType(if (s.positionReady) GpsFixType.GPS_FIX_TYPE_3D_FIX else GpsFixType.GPS_FIX_TYPE_NO_FIX)
         .lat(e7(s.location.latitude))
         .lon(e7(s.location.longitude))
         .alt((s.location.altitude.meters * 1000).roundToInt())
@@ -61,7 +128,7 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
         .epv(120)
         .vel(65535)
         .cog(65535)
-        .satellitesVisible(14)
+        .satellitesVisible(if (s.positionReady) 14 else 3)
         .build()
 
     private fun attitude(s: SimState): Attitude = Attitude.builder()
@@ -107,11 +174,9 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
         val SUPPORTED = setOf(
             MessageIds.SYS_STATUS, MessageIds.GPS_RAW_INT, MessageIds.ATTITUDE,
             MessageIds.GLOBAL_POSITION_INT, MessageIds.HOME_POSITION, MessageIds.EXTENDED_SYS_STATE,
+            MessageIds.VFR_HUD, MessageIds.MISSION_CURRENT,
         )
         const val MODE_FLAG_CUSTOM_MODE_ENABLED = 1
         const val MODE_FLAG_SAFETY_ARMED = 128
-        const val CELLS = 4
-        const val FULL_CELL_V = 4.2
-        const val EMPTY_CELL_V = 3.5
     }
 }

@@ -1,10 +1,11 @@
 package pod.sim
 
-import io.dronefleet.mavlink.common.CommandAck
+import io.dronefleet.mavlink.common.CommandInt
 import io.dronefleet.mavlink.common.CommandLong
-import io.dronefleet.mavlink.common.MavCmd
-import io.dronefleet.mavlink.common.MavResult
-import io.dronefleet.mavlink.util.EnumValue
+import io.dronefleet.mavlink.common.ParamRequestList
+import io.dronefleet.mavlink.common.ParamRequestRead
+import io.dronefleet.mavlink.common.ParamSet
+import io.dronefleet.mavlink.common.SetMode
 import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
@@ -35,7 +36,14 @@ import pod.mavlink.codec.FrameDecoder
 import pod.mavlink.codec.FrameEncoder
 import pod.mavlink.codec.MessageCodec
 import pod.mavlink.link.MavlinkLink
-import pod.mavlink.telemetry.FlightModes
+import pod.sim.autopilot.CommandRequest
+import pod.sim.autopilot.MavResult
+import pod.sim.autopilot.SimAutopilot
+import pod.sim.autopilot.SimOutput
+import kotlinx.coroutines.flow.SharedFlow
+import kotlinx.coroutines.flow.MutableSharedFlow
+import kotlinx.coroutines.flow.asSharedFlow
+import kotlin.time.DurationUnit
 import kotlin.time.Duration
 import kotlin.math.roundToLong
 import kotlin.time.Duration.Companion.milliseconds
@@ -58,20 +66,12 @@ public class SimVehicle(
     private val codec: MessageCodec = MessageCodec.Default,
 ) {
     private val encoder = FrameEncoder(codec)
-    private val sequences = SequenceNumbers()
-    private val model = FlightModel(
-        SimState(
-            location = config.home,
-            home = config.home,
-            charge = config.initialCharge,
-            customMode = FlightModes.customMode(config.autopilot, config.type, defaultModeName()) ?: 0,
-        ),
-    )
-    private val _state = MutableStateFlow(model.state)
-    private val rates = MutableStateFlow(config.streamRates)
-    private val streams = HashMap<Int, Job>()
     private val bootedAt = TimeSource.Monotonic.markNow()
     private val messages = SimMessages(config, bootedAt)
+    private val sequences = SequenceNumbers()
+    private val _state: MutableStateFlow<SimState>
+    private val rates = MutableStateFlow(config.streamRates)
+    private val streams = HashMap<Int, Job>()
     private var scope: CoroutineScope? = null
     private var missionTimer: Job? = null
     private var missionTimerAt: Long? = null
@@ -84,9 +84,32 @@ public class SimVehicle(
     public val missionServer: MissionServer = MissionServer(
         if (config.autopilot == pod.core.vehicle.Autopilot.PX4) MissionServerFlavor.PX4 else MissionServerFlavor.ARDUPILOT,
     )
+
+    /** The simulated autopilot; everything touching it runs on the vehicle's single-threaded dispatcher. */
+    internal val autopilot = SimAutopilot(
+        config.autopilot, config.type, config.systemId, config.home, config.initialCharge, missionServer,
+        readyAfter = config.positionReadyAfter.toDouble(DurationUnit.SECONDS),
+    )
+    private val _photos = MutableStateFlow<List<PhotoEvent>>(emptyList())
+    private val _reached = MutableStateFlow<List<Int>>(emptyList())
+    private val _texts = MutableSharedFlow<String>(replay = 64, extraBufferCapacity = 64, onBufferOverflow = BufferOverflow.DROP_OLDEST)
+
+    init {
+        _state = MutableStateFlow(autopilot.state())
+        messages.missionTotal = { missionServer.list(pod.mavlink.mission.MissionType.MISSION).size }
+    }
+
+    /** Photos the simulated camera took, oldest first. */
+    public val photos: StateFlow<List<PhotoEvent>> = _photos.asStateFlow()
+
+    /** Sequence numbers of the mission items reached (MISSION_ITEM_REACHED), in order, since boot. */
+    public val reachedItems: StateFlow<List<Int>> = _reached.asStateFlow()
+
+    /** STATUSTEXT lines the vehicle sent (the last 64 are replayed to new collectors). */
+    public val statusTexts: SharedFlow<String> = _texts.asSharedFlow()
     private var link: MavlinkLink? = null
 
-    /** The simulated physical state, updated at 20 Hz while running. */
+    /** The simulated state, updated after every physics tick and every handled message while running. */
     public val state: StateFlow<SimState> = _state.asStateFlow()
 
     /** Message id → rate in Hz of what it streams now, as configured or as a ground station asked. */
@@ -114,7 +137,7 @@ public class SimVehicle(
         this.scope = scope
         scope.launch { receive(link) }
         scope.launch { physics() }
-        scope.launch { every(1.seconds) { send(messages.heartbeat(model.state)) } }
+        scope.launch { every(1.seconds) { send(messages.heartbeat(autopilot.state())) } }
         for ((id, hz) in rates.value) restartStream(scope, id, hz)
     }
 
@@ -127,15 +150,44 @@ public class SimVehicle(
         streams.clear()
     }
 
+    /**
+     * Integrates at a fixed simulated step: each tick runs as many steps as the wall-clock time
+     * elapsed × [SimVehicleConfig.timeScale] calls for, at most [MAX_STEPS_PER_TICK] (a stalled
+     * machine drops simulated time rather than freezing in a catch-up loop).
+     */
     private suspend fun physics() {
-        val step = 50.milliseconds
+        val step = config.physicsStep.toDouble(DurationUnit.SECONDS)
         var last = TimeSource.Monotonic.markNow()
+        var owed = 0.0
         while (true) {
-            delay(step)
+            delay(TICK)
             val now = TimeSource.Monotonic.markNow()
-            model.step((now - last) * config.timeScale)
+            owed += (now - last).toDouble(DurationUnit.SECONDS) * config.timeScale
             last = now
-            _state.value = model.state
+            var steps = 0
+            while (owed >= step && steps < MAX_STEPS_PER_TICK) {
+                autopilot.step(step)
+                owed -= step
+                steps++
+            }
+            if (steps == MAX_STEPS_PER_TICK) owed = 0.0
+            flush()
+        }
+    }
+
+    /** Sends what the autopilot queued and publishes its state. */
+    private suspend fun flush() {
+        val outputs = autopilot.drain()
+        val s = autopilot.state()
+        _state.value = s
+        for (out in outputs) {
+            when (out) {
+                is SimOutput.Photo -> _photos.value = _photos.value + out.photo
+                is SimOutput.ItemReached -> _reached.value = _reached.value + out.seq
+                is SimOutput.Text -> _texts.tryEmit(out.text)
+                else -> Unit
+            }
+            send(messages.output(out, s, autopilot.params))
         }
     }
 
@@ -143,7 +195,7 @@ public class SimVehicle(
         streams.remove(messageId)?.cancel()
         if (hz <= 0) return
         streams[messageId] = scope.launch(CoroutineName("stream-$messageId")) {
-            every((1.0 / hz).seconds) { messages.build(messageId, model.state)?.let { send(it) } }
+            every((1.0 / hz).seconds) { messages.build(messageId, autopilot.state())?.let { send(it) } }
         }
     }
 
@@ -158,43 +210,81 @@ public class SimVehicle(
         inbox.close()
     }
 
+    @Suppress("DEPRECATION") // SET_MODE is deprecated but ground stations still send it
     internal suspend fun handle(frame: MavFrame, message: Any) {
         val target = MessageTargets.targetSystem(message)
         val mission = MissionWire.decode(message)
         if (mission != null && (target == null || target == 0 || target == config.systemId)) {
             serveMission(frame, mission)
+            flush()
             return
         }
-        if (message is CommandLong && addressedToUs(message.targetSystem(), message.targetComponent())) {
-            val result = when (message.command().value()) {
-                MAV_CMD_SET_MESSAGE_INTERVAL -> setInterval(message.param1().toInt(), message.param2())
-                else -> MavResult.MAV_RESULT_UNSUPPORTED
+        when (message) {
+            is CommandLong -> if (addressedToUs(message.targetSystem(), message.targetComponent())) {
+                command(
+                    CommandRequest(
+                        message.command().value(), message.param1(), message.param2(), message.param3(), message.param4(),
+                        message.param5().toDouble(), message.param6().toDouble(), message.param7(),
+                        frame = null, confirmation = message.confirmation(), sourceSystem = frame.systemId, sourceComponent = frame.componentId,
+                    ),
+                )
             }
-            send(
-                CommandAck.builder()
-                    .command(message.command())
-                    .result(EnumValue.of(result))
-                    .build(),
-            )
+            is CommandInt -> if (addressedToUs(message.targetSystem(), message.targetComponent())) {
+                command(
+                    CommandRequest(
+                        message.command().value(), message.param1(), message.param2(), message.param3(), message.param4(),
+                        message.x().toDouble(), message.y().toDouble(), message.z(),
+                        frame = message.frame().value(), sourceSystem = frame.systemId, sourceComponent = frame.componentId,
+                    ),
+                )
+            }
+            is SetMode -> if (message.targetSystem() == 0 || message.targetSystem() == config.systemId) {
+                autopilot.commands.handleSetMode(message.baseMode().value(), message.customMode(), frame.systemId, frame.componentId)
+            }
+            is ParamRequestRead -> if (addressedToUs(message.targetSystem(), message.targetComponent())) {
+                autopilot.paramService.read(message.paramId(), message.paramIndex())
+            }
+            is ParamRequestList -> if (addressedToUs(message.targetSystem(), message.targetComponent())) autopilot.paramService.list()
+            is ParamSet -> if (addressedToUs(message.targetSystem(), message.targetComponent())) {
+                autopilot.paramService.set(message.paramId(), message.paramValue())
+            }
+            else -> return
         }
+        flush()
     }
 
-    private fun setInterval(messageId: Int, intervalUs: Float): MavResult {
-        if (messageId == MessageIds.HEARTBEAT || messages.canBuild(messageId).not()) return MavResult.MAV_RESULT_DENIED
+    /** Message-level commands are answered here; everything else is the autopilot's. */
+    private suspend fun command(cmd: CommandRequest) {
+        val result = when (cmd.command) {
+            MAV_CMD_SET_MESSAGE_INTERVAL -> setInterval(cmd.param1.toInt(), cmd.param2)
+            MAV_CMD_REQUEST_MESSAGE -> requestMessage(cmd.param1.toInt())
+            else -> return autopilot.commands.handle(cmd)
+        }
+        autopilot.emit(SimOutput.Ack(cmd.command, result, 0, cmd.sourceSystem, cmd.sourceComponent))
+    }
+
+    private suspend fun requestMessage(messageId: Int): Int {
+        val message = messages.build(messageId, autopilot.state()) ?: return MavResult.DENIED
+        send(message)
+        return MavResult.ACCEPTED
+    }
+
+    private fun setInterval(messageId: Int, intervalUs: Float): Int {
+        if (messageId == MessageIds.HEARTBEAT || messages.canBuild(messageId).not()) return MavResult.DENIED
         val hz = when {
             intervalUs < 0 -> 0.0 // -1 disables the stream
             intervalUs == 0f -> config.streamRates[messageId] ?: 1.0 // 0 restores the default
             else -> 1_000_000.0 / intervalUs
         }
-        if (hz > 1000) return MavResult.MAV_RESULT_DENIED
+        if (hz > 1000) return MavResult.DENIED
         rates.value = rates.value + (messageId to hz)
         scope?.let { restartStream(it, messageId, hz) }
-        return MavResult.MAV_RESULT_ACCEPTED
+        return MavResult.ACCEPTED
     }
 
     /** Hands a mission-protocol message to the mission server and sends its replies to the asker. */
     private suspend fun serveMission(frame: MavFrame, message: MissionMessage) {
-        missionServer.home = homeItem()
+        missionServer.home = homeItem(autopilot.home)
         val replies = missionServer.onMessage(message, clockNanos())
         for (reply in replies) send(MissionWire.encode(reply, frame.systemId, frame.componentId))
         missionPeer = frame.systemId to frame.componentId
@@ -225,7 +315,7 @@ public class SimVehicle(
         }
     }
 
-    private fun homeItem(): MissionItem = config.home.let { home ->
+    private fun homeItem(home: pod.core.units.Location): MissionItem = home.let { home ->
         MissionItem(
             seq = 0, frame = 0, command = 16,
             x = (home.latitude * 1e7).roundToLong().toInt(), y = (home.longitude * 1e7).roundToLong().toInt(),
@@ -250,13 +340,10 @@ public class SimVehicle(
         }
     }
 
-    private fun defaultModeName(): String = when {
-        config.autopilot == pod.core.vehicle.Autopilot.PX4 -> "AUTO.LOITER"
-        config.type == pod.core.vehicle.VehicleType.FIXED_WING -> "MANUAL"
-        else -> "STABILIZE"
-    }
-
     private companion object {
         const val MAV_CMD_SET_MESSAGE_INTERVAL = 511
+        const val MAV_CMD_REQUEST_MESSAGE = 512
+        val TICK = 20.milliseconds
+        const val MAX_STEPS_PER_TICK = 2000
     }
 }

@@ -4,6 +4,9 @@ import pod.core.units.Location
 import pod.core.units.m
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleType
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
 
 /**
  * How a [SimVehicle] looks on the wire and how it behaves.
@@ -30,12 +33,21 @@ public data class SimVehicleConfig(
     public val timeScale: Double = 1.0,
     /** Message id → rate in Hz of the streams it sends before anyone asks (HEARTBEAT is always 1 Hz). */
     public val streamRates: Map<Int, Double> = DEFAULT_STREAM_RATES,
+    /**
+     * Simulated time after boot before the GPS has a 3D fix and the estimator is ready: arming is
+     * refused until then, as on a real autopilot (tens of seconds there; short here so tests stay fast).
+     */
+    public val positionReadyAfter: Duration = 2.seconds,
+    /** Simulated time the physics advances per integration step. */
+    public val physicsStep: Duration = 50.milliseconds,
 ) {
     init {
         require(systemId in 1..254) { "systemId must be in 1..254, was $systemId" }
         require(componentId in 1..255) { "componentId must be in 1..255, was $componentId" }
         require(initialCharge in 0.0..1.0) { "initialCharge must be in 0..1, was $initialCharge" }
         require(timeScale > 0 && timeScale <= 1000) { "timeScale must be in (0, 1000], was $timeScale" }
+        require(!positionReadyAfter.isNegative()) { "positionReadyAfter must not be negative, was $positionReadyAfter" }
+        require(physicsStep > Duration.ZERO && physicsStep <= 1.seconds) { "physicsStep must be in (0, 1 s], was $physicsStep" }
         streamRates.forEach { (id, hz) -> require(hz >= 0 && hz <= 1000) { "stream rate for message $id must be in [0, 1000] Hz, was $hz" } }
     }
 
@@ -43,7 +55,10 @@ public data class SimVehicleConfig(
         /** Near the Faculty of Engineering in Porto, where Dolphin was written. */
         public val DEFAULT_HOME: Location = Location(41.178_046, -8.595_786, 120.m)
 
-        /** SYS_STATUS, GPS_RAW_INT, EXTENDED_SYS_STATE 1 Hz; GLOBAL_POSITION_INT, ATTITUDE 2 Hz; HOME_POSITION 0.2 Hz. */
+        /**
+         * SYS_STATUS, GPS_RAW_INT, EXTENDED_SYS_STATE, MISSION_CURRENT 1 Hz; GLOBAL_POSITION_INT,
+         * ATTITUDE, VFR_HUD 2 Hz; HOME_POSITION 0.2 Hz.
+         */
         public val DEFAULT_STREAM_RATES: Map<Int, Double> = mapOf(
             MessageIds.SYS_STATUS to 1.0,
             MessageIds.GPS_RAW_INT to 1.0,
@@ -51,6 +66,8 @@ public data class SimVehicleConfig(
             MessageIds.GLOBAL_POSITION_INT to 2.0,
             MessageIds.HOME_POSITION to 0.2,
             MessageIds.EXTENDED_SYS_STATE to 1.0,
+            MessageIds.VFR_HUD to 2.0,
+            MessageIds.MISSION_CURRENT to 1.0,
         )
     }
 }
@@ -65,6 +82,12 @@ public object MessageIds {
     public const val GPS_RAW_INT: Int = 24
     /** ATTITUDE. */
     public const val ATTITUDE: Int = 30
+    /** MISSION_CURRENT. */
+    public const val MISSION_CURRENT: Int = 42
+
+    /** VFR_HUD. */
+    public const val VFR_HUD: Int = 74
+
     /** GLOBAL_POSITION_INT. */
     public const val GLOBAL_POSITION_INT: Int = 33
     /** HOME_POSITION. */

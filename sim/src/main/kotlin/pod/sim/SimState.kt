@@ -1,0 +1,49 @@
+package pod.sim
+
+import pod.core.units.Distance
+import pod.core.units.Location
+import pod.core.units.m
+import pod.core.vehicle.LandedState
+import kotlin.math.hypot
+
+/** A snapshot of a simulated vehicle: its physical state and what its autopilot is doing. */
+public data class SimState(
+    /** Where it is (altitude above mean sea level). */
+    public val location: Location,
+    /** Home: where it booted, or where DO_SET_HOME moved it. */
+    public val home: Location,
+    /** Velocity north, east, down in m/s. */
+    public val velocityNed: Triple<Double, Double, Double> = Triple(0.0, 0.0, 0.0),
+    /** Heading in degrees, 0..360. */
+    public val headingDeg: Double = 0.0,
+    /** Battery charge, 0..1. */
+    public val charge: Double,
+    /** Motors armed. */
+    public val armed: Boolean = false,
+    /** On the ground, in the air, … */
+    public val landedState: LandedState = LandedState.ON_GROUND,
+    /** The autopilot's custom_mode number. */
+    public val customMode: Long = 0,
+    /** The flight mode's name ("GUIDED", "AUTO.MISSION", …). */
+    public val modeName: String = "",
+    /** Airspeed in m/s (no wind: the speed through the air along the heading). */
+    public val airspeed: Double = 0.0,
+    /** Throttle in percent, 0..100. */
+    public val throttle: Int = 0,
+    /** The mission item being executed (MISSION_CURRENT's seq). */
+    public val missionCurrent: Int = 0,
+    /** True once the simulated GPS has a 3D fix and the estimator is ready (arming is possible). */
+    public val positionReady: Boolean = true,
+) {
+    /** Height above home. */
+    public val relativeAltitude: Distance get() = (location.altitude.meters - home.altitude.meters).m
+
+    /** Altitude above mean sea level. */
+    public val altitudeAmsl: Distance get() = location.altitude
+
+    /** Horizontal speed over the ground in m/s. */
+    public val groundSpeed: Double get() = hypot(velocityNed.first, velocityNed.second)
+
+    /** Climb rate in m/s, positive up. */
+    public val climbRate: Double get() = -velocityNed.third
+}

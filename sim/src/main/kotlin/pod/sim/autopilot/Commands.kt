@@ -1,0 +1,304 @@
+package pod.sim.autopilot
+
+import pod.core.units.Location
+import pod.core.units.m
+import pod.mavlink.telemetry.FlightModes
+import pod.sim.autopilot.MavResult.ACCEPTED
+import pod.sim.autopilot.MavResult.DENIED
+import pod.sim.autopilot.MavResult.FAILED
+import pod.sim.autopilot.MavResult.IN_PROGRESS
+import pod.sim.autopilot.MavResult.TEMPORARILY_REJECTED
+import pod.sim.autopilot.MavResult.UNSUPPORTED
+
+/**
+ * The vehicle side of the command protocol: each COMMAND_LONG / COMMAND_INT gets the COMMAND_ACK
+ * result the claimed flavour would give in the vehicle's state (see docs/sim-vehicles.md for the
+ * table and where each answer comes from). Long-running commands (PREFLIGHT_CALIBRATION) answer
+ * IN_PROGRESS and finish from [step].
+ */
+internal class Commands(private val ap: SimAutopilot) {
+    private var calibration: Calibration? = null
+
+    private class Calibration(val request: CommandRequest, var elapsed: Double = 0.0, var reported: Int = 0)
+
+    /** Handles [cmd]; its ACK (and any STATUSTEXT) is queued on the autopilot. */
+    fun handle(cmd: CommandRequest) {
+        val result = when (cmd.command) {
+            ARM_DISARM -> armDisarm(cmd)
+            DO_SET_MODE -> setMode(cmd.param1.toInt(), if (ap.isPx4) px4Mode(cmd.param2.toInt(), cmd.param3.toInt()) else cmd.param2.toLong())
+            NAV_TAKEOFF -> takeoff(cmd)
+            NAV_LAND -> land()
+            NAV_RETURN_TO_LAUNCH -> modeResult(if (ap.isPx4) "AUTO.RTL" else "RTL")
+            NAV_LOITER_UNLIM -> if (ap.isPx4 || !ap.multirotor) UNSUPPORTED else modeResult("LOITER")
+            DO_LAND_START -> landStart()
+            DO_REPOSITION -> reposition(cmd)
+            DO_PAUSE_CONTINUE -> pauseContinue(cmd)
+            MISSION_START -> missionStart(cmd)
+            DO_SET_MISSION_CURRENT -> setCurrent(cmd)
+            DO_CHANGE_SPEED -> if (!ap.isPx4 && cmd.param2 <= 0f) DENIED else changeSpeed(cmd.param1.toInt(), cmd.param2.toDouble())
+            DO_SET_HOME -> setHome(cmd)
+            PREFLIGHT_CALIBRATION -> calibrate(cmd)
+            else -> UNSUPPORTED
+        }
+        ack(cmd, result, 0)
+    }
+
+    /** Handles the legacy SET_MODE message; ArduPilot acknowledges it as "command 11", PX4 as DO_SET_MODE. */
+    fun handleSetMode(baseMode: Int, customMode: Long, sourceSystem: Int, sourceComponent: Int) {
+        val result = setMode(baseMode, customMode)
+        ap.emit(SimOutput.Ack(if (ap.isPx4) DO_SET_MODE else SET_MODE_MESSAGE, result, 0, sourceSystem, sourceComponent))
+    }
+
+    /** Advances long-running commands by [dt] seconds. */
+    fun step(dt: Double) {
+        val cal = calibration ?: return
+        cal.elapsed += dt
+        val percent = (cal.elapsed / CALIBRATION_SECONDS * 100).toInt().coerceAtMost(100)
+        if (percent >= 100) {
+            calibration = null
+            ap.text(Severity.INFO, "Barometer calibration complete")
+            ack(cal.request, ACCEPTED, 0)
+        } else if (percent >= cal.reported + 25) {
+            cal.reported = percent / 25 * 25
+            ack(cal.request, IN_PROGRESS, cal.reported)
+        }
+    }
+
+    private fun ack(cmd: CommandRequest, result: Int, progress: Int) =
+        ap.emit(SimOutput.Ack(cmd.command, result, progress, cmd.sourceSystem, cmd.sourceComponent))
+
+    private fun refuse(text: String, severity: Int = Severity.CRITICAL) = ap.text(severity, text)
+
+    private fun armDisarm(cmd: CommandRequest): Int {
+        val forced = cmd.param2.toInt() == FORCE_MAGIC
+        return when (cmd.param1.toInt()) {
+            1 -> when {
+                ap.armed -> ACCEPTED
+                forced -> ACCEPTED.also { ap.arm() }
+                else -> armingProblem()?.let { problem ->
+                    refuse(problem)
+                    if (ap.isPx4) TEMPORARILY_REJECTED else FAILED
+                } ?: ACCEPTED.also { ap.arm() }
+            }
+            0 -> when {
+                !ap.armed -> ACCEPTED
+                forced || !ap.flying -> ACCEPTED.also { ap.disarm() }
+                ap.isPx4 -> TEMPORARILY_REJECTED.also { refuse("Disarming denied: not landed") }
+                else -> FAILED
+            }
+            else -> DENIED
+        }
+    }
+
+    /** The STATUSTEXT explaining why arming is refused now, or null when the vehicle may arm. */
+    fun armingProblem(): String? {
+        val modeOk = Modes.armable(ap.autopilot, ap.type, ap.modeName, if (ap.isPx4) 0 else ap.params.valueOf("AUTO_OPTIONS")?.toInt() ?: 0)
+        if (ap.isPx4) {
+            return when {
+                !ap.positionReady -> "Arming denied: no valid global position estimate"
+                ap.charge < ap.params["BAT_LOW_THR"] -> "Arming denied: low battery"
+                !modeOk -> "Arming denied: mode not armable"
+                calibration != null -> "Arming denied: calibration in progress"
+                else -> null
+            }
+        }
+        val checks = ap.params["ARMING_CHECK"].toInt() != 0
+        return when {
+            checks && !ap.positionReady -> "PreArm: Need 3D Fix"
+            checks && packVoltage(ap.charge) < ap.params["BATT_ARM_VOLT"] -> "PreArm: Battery 1 below minimum arming voltage"
+            !modeOk -> "Arm: Mode not armable"
+            calibration != null -> "PreArm: Calibration in progress"
+            else -> null
+        }
+    }
+
+    private fun px4Mode(main: Int, sub: Int): Long = (main.toLong() shl 16) or (sub.toLong() shl 24)
+
+    private fun setMode(baseMode: Int, customMode: Long): Int {
+        if (baseMode and CUSTOM_MODE_ENABLED == 0) return if (ap.isPx4) TEMPORARILY_REJECTED else UNSUPPORTED
+        val name = FlightModes.decode(ap.autopilot, ap.type, customMode).name
+        if (name.startsWith("MODE(") || (ap.isPx4 && name == "AUTO")) {
+            if (ap.isPx4) refuse("Unsupported mode")
+            return if (ap.isPx4) TEMPORARILY_REJECTED else FAILED
+        }
+        return modeResult(name)
+    }
+
+    /** Switches to [name] when the flavour allows it now: ACCEPTED, or the flavour's refusal. */
+    private fun modeResult(name: String): Int {
+        val refused = if (ap.isPx4) TEMPORARILY_REJECTED else FAILED
+        val behaviour = Modes.behaviour(ap.autopilot, ap.type, name) ?: return refused
+        if (name == ap.modeName && behaviour != Behaviour.AUTO) return ACCEPTED
+        if (behaviour == Behaviour.AUTO) {
+            if (!ap.mission.hasMission()) {
+                refuse(if (ap.isPx4) "Mission start denied! No valid mission" else "Mode change to AUTO failed: no mission")
+                return refused
+            }
+            if (!ap.isPx4 && ap.multirotor && ap.armed && !ap.flying && !ap.mission.startsWithTakeoff()) {
+                refuse("Auto: Missing Takeoff Cmd")
+                return refused
+            }
+        }
+        if (ap.isPx4 && name == "OFFBOARD") return refused.also { refuse("Offboard mode: no setpoints") }
+        ap.setMode(name)
+        return ACCEPTED
+    }
+
+    private fun takeoff(cmd: CommandRequest): Int {
+        if (ap.isPx4) {
+            val amsl = cmd.z.takeIf { it.isFinite() }?.toDouble() ?: ap.takeoffAltitude(null)
+            if (!ap.flying && !ap.positionReady) return TEMPORARILY_REJECTED.also { refuse("Takeoff denied! Please disarm and retry") }
+            ap.setMode("AUTO.TAKEOFF")
+            if (ap.activity is Activity.Takeoff) ap.activity = Activity.Takeoff(maxOf(amsl, ap.ground + 1.0), "AUTO.LOITER")
+            return ACCEPTED
+        }
+        if (cmd.isInt && cmd.frame != FRAME_GLOBAL_RELATIVE_ALT) return DENIED
+        if (!ap.armed || ap.flying) return FAILED
+        val altitude = ap.home.altitude.meters + cmd.z.toDouble()
+        if (ap.multirotor) {
+            if (ap.modeName !in setOf("GUIDED", "LOITER", "POSHOLD")) return FAILED
+            ap.activity = Activity.Takeoff(altitude, null)
+        } else {
+            ap.setMode("TAKEOFF")
+            ap.activity = Activity.Takeoff(if (cmd.z > 0) altitude else ap.takeoffAltitude(null), "LOITER")
+        }
+        return ACCEPTED
+    }
+
+    private fun land(): Int = when {
+        ap.isPx4 -> modeResult("AUTO.LAND")
+        ap.multirotor -> modeResult("LAND")
+        else -> UNSUPPORTED // ArduPlane lands through its mission's landing sequence (DO_LAND_START)
+    }
+
+    private fun landStart(): Int {
+        val index = ap.mission.landStartIndex() ?: return FAILED.also { refuse("No landing sequence found", Severity.WARNING) }
+        if (!ap.flying) return FAILED
+        ap.setMode(if (ap.isPx4) "AUTO.MISSION" else if (ap.multirotor) "AUTO_RTL" else "AUTO")
+        ap.mission.startAt(index)
+        return ACCEPTED
+    }
+
+    private fun reposition(cmd: CommandRequest): Int {
+        if (!ap.isPx4 && !cmd.isInt) return UNSUPPORTED // ArduPilot takes DO_REPOSITION only as COMMAND_INT
+        val changeMode = cmd.param2.toInt() and REPOSITION_CHANGE_MODE != 0
+        val guided = if (ap.isPx4) "AUTO.LOITER" else "GUIDED"
+        if (!ap.isPx4 && ap.modeName != guided && !changeMode) return DENIED
+        val frame = cmd.frame ?: FRAME_GLOBAL
+        if (frame !in setOf(FRAME_GLOBAL, FRAME_GLOBAL_RELATIVE_ALT, FRAME_GLOBAL_INT, FRAME_GLOBAL_RELATIVE_ALT_INT, 10, 11)) return DENIED
+        val lat = cmd.latitude()
+        val lon = cmd.longitude()
+        if ((lat != null && lat !in -90.0..90.0) || (lon != null && lon !in -180.0..180.0)) return DENIED
+        if (!ap.armed || !ap.flying) return if (ap.isPx4) TEMPORARILY_REJECTED else FAILED
+        if (ap.isPx4 && !changeMode && ap.modeName != guided) return ACCEPTED // PX4 only acts on it in Hold
+        val here = ap.body.location
+        val alt = when {
+            !cmd.z.isFinite() -> here.altitude.meters
+            frame == FRAME_GLOBAL || frame == FRAME_GLOBAL_INT -> cmd.z.toDouble()
+            else -> ap.home.altitude.meters + cmd.z
+        }
+        val target = Location(lat ?: here.latitude, lon ?: here.longitude, alt.m)
+        if (ap.modeName != guided) ap.setMode(guided)
+        ap.activity = Activity.GoTo(target, cmd.param1.toDouble().takeIf { it > 0 })
+        return ACCEPTED
+    }
+
+    private fun pauseContinue(cmd: CommandRequest): Int {
+        if (ap.isPx4 || !ap.multirotor) return UNSUPPORTED // PX4 and ArduPlane: switch to Hold / LOITER instead
+        return when (cmd.param1.toInt()) {
+            0 -> {
+                val ok = when (ap.activity) {
+                    Activity.Mission -> ap.mission.pause()
+                    is Activity.GoTo -> true.also { ap.activity = Activity.Hold(ap.body.location, 0.0) }
+                    is Activity.Hold -> ap.modeName == "GUIDED"
+                    else -> false
+                }
+                if (ok) ACCEPTED else FAILED.also { refuse("Failed to pause", Severity.INFO) }
+            }
+            1 -> if (ap.activity == Activity.Mission && ap.mission.resume()) ACCEPTED else FAILED.also { refuse("Failed to resume", Severity.INFO) }
+            else -> DENIED
+        }
+    }
+
+    private fun missionStart(cmd: CommandRequest): Int {
+        if (ap.isPx4) {
+            if (!ap.mission.hasMission()) return TEMPORARILY_REJECTED.also { refuse("Mission start denied! No valid mission") }
+            val firstItem = cmd.param1.toInt()
+            if (!ap.armed) {
+                armingProblem()?.let { problem -> refuse(problem); return TEMPORARILY_REJECTED }
+                ap.arm()
+            }
+            if (firstItem >= 0) ap.setCurrent(firstItem)
+            ap.setMode("AUTO.MISSION")
+            return ACCEPTED
+        }
+        if (cmd.param1 != 0f || cmd.param2 != 0f) return DENIED // first/last item are not supported
+        return if (modeResult("AUTO") == ACCEPTED) ACCEPTED else FAILED
+    }
+
+    private fun setCurrent(cmd: CommandRequest): Int {
+        val seq = cmd.param1.toInt()
+        if (seq !in 0 until ap.missionServer.list(pod.mavlink.mission.MissionType.MISSION).size) return DENIED
+        ap.setCurrent(seq)
+        return ACCEPTED
+    }
+
+    /** DO_CHANGE_SPEED: [kind] 0 air / 1 ground / 2 climb / 3 descent, [speed] m/s (-1 or less: unchanged). */
+    fun changeSpeed(kind: Int, speed: Double): Int {
+        if (speed <= 0) return ACCEPTED
+        when (kind) {
+            0, 1 -> ap.cruiseOverride = speed
+            2 -> ap.climbOverride = speed
+            3 -> ap.descentOverride = speed
+            else -> return DENIED
+        }
+        return ACCEPTED
+    }
+
+    private fun setHome(cmd: CommandRequest): Int {
+        if (cmd.param1.toInt() == 1) {
+            ap.setHome(ap.body.location)
+            return ACCEPTED
+        }
+        val lat = cmd.latitude() ?: return FAILED
+        val lon = cmd.longitude() ?: return FAILED
+        if (lat !in -90.0..90.0 || lon !in -180.0..180.0 || (lat == 0.0 && lon == 0.0)) return FAILED
+        val alt = if (cmd.frame == FRAME_GLOBAL_RELATIVE_ALT || cmd.frame == FRAME_GLOBAL_RELATIVE_ALT_INT) ap.home.altitude.meters + cmd.z else cmd.z.toDouble()
+        ap.setHome(Location(lat, lon, alt.m))
+        return ACCEPTED
+    }
+
+    private fun calibrate(cmd: CommandRequest): Int {
+        if (ap.armed || calibration != null) return TEMPORARILY_REJECTED
+        val any = listOf(cmd.param1, cmd.param2, cmd.param3, cmd.param4, cmd.x.toFloat(), cmd.y.toFloat(), cmd.z).any { it != 0f }
+        if (!any) return ACCEPTED
+        calibration = Calibration(cmd)
+        return IN_PROGRESS
+    }
+
+    companion object {
+        const val SET_MODE_MESSAGE = 11
+        const val NAV_LOITER_UNLIM = 17
+        const val NAV_RETURN_TO_LAUNCH = 20
+        const val NAV_LAND = 21
+        const val NAV_TAKEOFF = 22
+        const val DO_SET_MODE = 176
+        const val DO_CHANGE_SPEED = 178
+        const val DO_SET_HOME = 179
+        const val DO_LAND_START = 189
+        const val DO_REPOSITION = 192
+        const val DO_PAUSE_CONTINUE = 193
+        const val DO_SET_MISSION_CURRENT = 224
+        const val PREFLIGHT_CALIBRATION = 241
+        const val MISSION_START = 300
+        const val ARM_DISARM = 400
+        const val FORCE_MAGIC = 21196
+        const val CUSTOM_MODE_ENABLED = 1
+        const val REPOSITION_CHANGE_MODE = 1
+        const val FRAME_GLOBAL = 0
+        const val FRAME_GLOBAL_RELATIVE_ALT = 3
+        const val FRAME_GLOBAL_INT = 5
+        const val FRAME_GLOBAL_RELATIVE_ALT_INT = 6
+        const val CALIBRATION_SECONDS = 2.0
+    }
+}

@@ -1,0 +1,341 @@
+package pod.sim.autopilot
+
+import pod.core.units.Location
+import pod.core.units.m
+import pod.mavlink.mission.MissionItem
+import pod.mavlink.mission.MissionType
+import pod.sim.flight.Guidance
+import pod.sim.flight.horizontalDistance
+import pod.sim.flight.northEast
+import kotlin.math.abs
+import kotlin.math.atan2
+
+/**
+ * Flies the MISSION list in AUTO: NAV items in order (with DO_JUMP), DO and CONDITION items as
+ * they come (sequentially, as PX4 does; ArduPilot starts the DO items that follow a NAV item
+ * together with it), MISSION_ITEM_REACHED when a NAV item completes, and the flavour's behaviour
+ * at the end. ArduPilot's item 0 is home and is not flown; PX4 starts at item 0.
+ *
+ * The current item lives in the [SimAutopilot.missionServer] (MISSION_SET_CURRENT changes what
+ * is flown next); a change made from outside while flying makes the runner jump there.
+ */
+internal class MissionRunner(private val ap: SimAutopilot) {
+    private var seq = 0
+    private var synced = -1
+    private var done = false
+    private val jumps = HashMap<Int, Int>()
+    private var item = ItemState()
+    private var holdAt: Location? = null
+
+    /** Where a paused mission holds (ArduCopter's DO_PAUSE_CONTINUE), or null when not paused. */
+    var pausedAt: Location? = null
+        private set
+
+    /** True while the current item is a landing (NAV_LAND, or an RTL descending). */
+    var landing = false
+        private set
+
+    /** True when the mission has ended with the vehicle on the ground. */
+    var finishedOnGround = false
+        private set
+
+    private class ItemState {
+        var target: Location? = null
+        var arrivedAt: Double? = null
+        var previousDistance = Double.MAX_VALUE
+        var circled = 0.0
+        var lastBearing: Double? = null
+        var waitUntil: Double? = null
+        var plan: ReturnPlan? = null
+    }
+
+    private val items: List<MissionItem> get() = ap.missionServer.list(MissionType.MISSION)
+    private val first: Int get() = if (ap.isPx4) 0 else 1
+
+    /** True when the list holds something AUTO can fly. */
+    fun hasMission(): Boolean = items.size > first
+
+    /** The index of the first DO_LAND_START marker, or null. */
+    fun landStartIndex(): Int? = items.indexOfFirst { it.command == DO_LAND_START }.takeIf { it >= 0 }
+
+    /** The first NAV command is a take-off (ArduCopter refuses AUTO on the ground without one). */
+    fun startsWithTakeoff(): Boolean = items.drop(first).firstOrNull { it.command in NAV }?.command.let { it == NAV_TAKEOFF || it == NAV_VTOL_TAKEOFF }
+
+    /** Starts or resumes: from the current item when it is a valid one, else from the first. */
+    fun start() {
+        val current = ap.missionServer.current
+        if (done || current < first || current >= items.size) {
+            seq = first
+            jumps.clear()
+        } else {
+            seq = current
+        }
+        done = false
+        finishedOnGround = false
+        pausedAt = null
+        newItem()
+    }
+
+    /** Starts at [index] (DO_LAND_START, MISSION_START with a first item). */
+    fun startAt(index: Int) {
+        done = false
+        finishedOnGround = false
+        seq = index.coerceAtLeast(first)
+        jumps.clear()
+        newItem()
+    }
+
+    /** AUTO was left. */
+    fun stop() {
+        pausedAt = null
+        landing = false
+    }
+
+    /** Pauses where the vehicle is; false when there is nothing to pause. */
+    fun pause(): Boolean {
+        if (done || !ap.flying) return false
+        pausedAt = ap.body.location
+        return true
+    }
+
+    /** Continues the paused item; false when not paused. */
+    fun resume(): Boolean = (pausedAt != null).also { pausedAt = null }
+
+    /** Whether the vehicle in AUTO on the ground is about to take off (so it is not parked). */
+    fun wantsToFly(): Boolean = !done && (ap.isPx4 || items.getOrNull(seq)?.command.let { it == NAV_TAKEOFF || it == NAV_VTOL_TAKEOFF })
+
+    /** A landing item touched down: it is complete. */
+    fun touchedDown() {
+        landing = false
+        complete()
+        if (seq >= items.size) finish()
+    }
+
+    /** What to fly this step. */
+    fun guidance(): Guidance {
+        if (ap.missionServer.current != synced) {
+            seq = ap.missionServer.current.coerceAtLeast(first)
+            done = false
+            newItem()
+        }
+        pausedAt?.let { return Guidance.Loiter(it, 0.0) }
+        repeat(MAX_ITEMS_PER_STEP) {
+            if (done) return hold()
+            val current = items.getOrNull(seq) ?: run {
+                finish()
+                return hold()
+            }
+            if (current.command in NAV) {
+                nav(current)?.let { return it }
+                complete()
+            } else {
+                if (doCommand(current)) return hold()
+                advance()
+            }
+        }
+        return hold()
+    }
+
+    private fun hold(): Guidance {
+        val at = holdAt ?: ap.body.location
+        if (ap.body.onGround) return Guidance.Idle
+        return if (ap.multirotor) Guidance.Loiter(at, 0.0) else ap.loiterRadius().let { (r, cw) -> Guidance.Loiter(at, r, cw) }
+    }
+
+    /** The guidance for NAV item [it], or null when it is complete. */
+    private fun nav(it: MissionItem): Guidance? {
+        val body = ap.body
+        val target = item.target ?: location(it).also { t -> item.target = t }
+        if (body.onGround && it.command != NAV_TAKEOFF && it.command != NAV_VTOL_TAKEOFF && it.command != NAV_LAND) {
+            // PX4 takes off by itself before the first item; ArduPilot needs a take-off item.
+            if (!ap.isPx4 || !ap.armed) return Guidance.Idle
+            return Guidance.Climb(maxOf(target.altitude.meters, ap.takeoffAltitude(null)))
+        }
+        return when (it.command) {
+            NAV_TAKEOFF, NAV_VTOL_TAKEOFF -> when {
+                !ap.armed -> Guidance.Idle
+                body.location.altitude.meters >= target.altitude.meters - if (ap.multirotor) 0.3 else 2.0 -> null
+                else -> Guidance.Climb(target.altitude.meters)
+            }
+            NAV_LAND, NAV_VTOL_LAND -> {
+                landing = true
+                holdAt = null
+                Guidance.Land(if (it.x == 0 && it.y == 0) (if (ap.multirotor) null else body.location) else target)
+            }
+            NAV_RETURN_TO_LAUNCH -> {
+                val plan = item.plan ?: ap.returnPlan().also { p -> item.plan = p }
+                val g = plan.guidance(body)
+                landing = plan.landing
+                if (plan.circlingHome) null else g
+            }
+            NAV_LOITER_UNLIM -> loiter(it, target)
+            NAV_LOITER_TIME -> loiter(it, target).takeIf { _ -> item.arrivedAt.let { a -> a == null || ap.time - a < it.param1 } }
+            NAV_LOITER_TURNS -> turns(it, target)
+            else -> waypoint(it, target)
+        }
+    }
+
+    private fun waypoint(it: MissionItem, target: Location): Guidance? {
+        val body = ap.body
+        if (item.arrivedAt == null) {
+            val d = horizontalDistance(body.location, target)
+            val radius = ap.acceptanceRadius(it.param2)
+            val arrived = if (ap.multirotor) {
+                d < radius && abs(body.location.altitude.meters - target.altitude.meters) < 1.0
+            } else {
+                // A plane also counts a waypoint it is flying away from after a close pass.
+                d < radius || (d < 3 * radius && d > item.previousDistance)
+            }
+            item.previousDistance = d
+            if (!arrived) return Guidance.GoTo(target)
+            item.arrivedAt = ap.time
+            holdAt = target
+        }
+        val holdFor = if (ap.multirotor) it.param1.toDouble() else 0.0
+        return if (ap.time - item.arrivedAt!! < holdFor) Guidance.Loiter(target, 0.0) else null
+    }
+
+    private fun radiusOf(it: MissionItem): Pair<Double, Boolean> {
+        val r = it.param3.toDouble()
+        return when {
+            r != 0.0 -> abs(r) to (r > 0)
+            ap.multirotor -> 0.0 to true
+            else -> ap.loiterRadius()
+        }
+    }
+
+    private fun loiter(it: MissionItem, target: Location): Guidance {
+        val (radius, cw) = radiusOf(it)
+        holdAt = target
+        if (item.arrivedAt == null && onCircle(target, radius)) item.arrivedAt = ap.time
+        return Guidance.Loiter(target, radius, cw)
+    }
+
+    private fun turns(it: MissionItem, target: Location): Guidance? {
+        var (radius, cw) = radiusOf(it)
+        if (ap.multirotor && radius == 0.0) radius = ap.params["CIRCLE_RADIUS"] / 100 // the simulator does not pivot on the spot
+        holdAt = target
+        if (onCircle(target, radius)) {
+            val (n, e) = northEast(target, ap.body.location)
+            val bearing = Math.toDegrees(atan2(e, n))
+            item.lastBearing?.let { last ->
+                var delta = bearing - last
+                if (delta > 180) delta -= 360
+                if (delta < -180) delta += 360
+                item.circled += if (cw) delta else -delta
+            }
+            item.lastBearing = bearing
+        }
+        return if (item.circled >= abs(it.param1) * 360.0) null else Guidance.Loiter(target, radius, cw)
+    }
+
+    private fun onCircle(center: Location, radius: Double): Boolean {
+        val d = horizontalDistance(center, ap.body.location)
+        return abs(d - radius) < maxOf(3.0, radius * 0.2) && abs(ap.body.location.altitude.meters - center.altitude.meters) < 5.0
+    }
+
+    /** Runs DO / CONDITION item [it]; true while it still waits (CONDITION_DELAY). */
+    private fun doCommand(it: MissionItem): Boolean {
+        when (it.command) {
+            CONDITION_DELAY -> {
+                val until = item.waitUntil ?: (ap.time + it.param1).also { t -> item.waitUntil = t }
+                return ap.time < until
+            }
+            DO_JUMP -> {
+                val left = jumps.getOrPut(seq) { it.param2.toInt() }
+                if (left != 0 && it.param1.toInt() in items.indices) {
+                    if (left > 0) jumps[seq] = left - 1
+                    seq = it.param1.toInt().coerceAtLeast(first) - 1 // advance() moves onto the target
+                }
+            }
+            DO_CHANGE_SPEED -> ap.commands.changeSpeed(it.param1.toInt(), it.param2.toDouble())
+            DO_SET_HOME -> ap.setHome(if (it.param1 == 1f || (it.x == 0 && it.y == 0)) ap.body.location else location(it))
+            IMAGE_START_CAPTURE -> ap.camera.startInterval(it.param2.toDouble(), it.param3.toInt(), ap.time)
+            IMAGE_STOP_CAPTURE -> ap.camera.stop()
+            DO_DIGICAM_CONTROL -> if (it.x == 1) ap.camera.shoot()
+            DO_SET_CAM_TRIGG_DIST -> {
+                ap.camera.startDistance(it.param1.toDouble())
+                if (it.param3 == 1f) ap.camera.shoot()
+            }
+            else -> Unit // DO_LAND_START is a marker; CONDITION_YAW and the rest change nothing simulated
+        }
+        return false
+    }
+
+    private fun complete() {
+        ap.reached += seq
+        ap.emit(SimOutput.ItemReached(seq))
+        advance()
+    }
+
+    private fun advance() {
+        seq++
+        newItem()
+    }
+
+    private fun newItem() {
+        item = ItemState()
+        landing = false
+        if (seq < items.size) {
+            ap.setCurrent(seq)
+        }
+        synced = ap.missionServer.current
+    }
+
+    private fun finish() {
+        if (done) return
+        done = true
+        landing = false
+        holdAt = ap.body.location
+        if (ap.body.onGround) {
+            finishedOnGround = true
+            return
+        }
+        when {
+            ap.isPx4 -> ap.setMode("AUTO.LOITER")
+            !ap.multirotor -> ap.setMode("RTL")
+            else -> Unit // ArduCopter holds at the last point, still in AUTO
+        }
+    }
+
+    /** Where item [it] points, with its altitude resolved against home (terrain frames count as relative). */
+    private fun location(it: MissionItem): Location {
+        val here = ap.body.location
+        val base = if ((it.x == 0 && it.y == 0) || !it.isGlobal) here else Location(it.latitude, it.longitude)
+        val alt = when (it.frame) {
+            0, 5 -> it.z.toDouble()
+            3, 6, 10, 11 -> ap.home.altitude.meters + it.z
+            else -> here.altitude.meters
+        }
+        return base.copy(altitude = alt.m)
+    }
+
+    companion object {
+        const val NAV_WAYPOINT = 16
+        const val NAV_LOITER_UNLIM = 17
+        const val NAV_LOITER_TURNS = 18
+        const val NAV_LOITER_TIME = 19
+        const val NAV_RETURN_TO_LAUNCH = 20
+        const val NAV_LAND = 21
+        const val NAV_TAKEOFF = 22
+        const val NAV_LOITER_TO_ALT = 31
+        const val NAV_SPLINE_WAYPOINT = 82
+        const val NAV_VTOL_TAKEOFF = 84
+        const val NAV_VTOL_LAND = 85
+        const val CONDITION_DELAY = 112
+        const val CONDITION_YAW = 115
+        const val DO_JUMP = 177
+        const val DO_CHANGE_SPEED = 178
+        const val DO_SET_HOME = 179
+        const val DO_LAND_START = 189
+        const val DO_DIGICAM_CONTROL = 203
+        const val DO_SET_CAM_TRIGG_DIST = 206
+        const val IMAGE_START_CAPTURE = 2000
+        const val IMAGE_STOP_CAPTURE = 2001
+        val NAV = setOf(
+            NAV_WAYPOINT, NAV_LOITER_UNLIM, NAV_LOITER_TURNS, NAV_LOITER_TIME, NAV_RETURN_TO_LAUNCH, NAV_LAND, NAV_TAKEOFF,
+            NAV_LOITER_TO_ALT, NAV_SPLINE_WAYPOINT, NAV_VTOL_TAKEOFF, NAV_VTOL_LAND,
+        )
+        private const val MAX_ITEMS_PER_STEP = 64
+    }
+}

@@ -1,0 +1,67 @@
+package pod.sim.autopilot
+
+import pod.core.vehicle.Autopilot
+import pod.core.vehicle.VehicleType
+
+/** What a flight mode makes the simulated vehicle do. */
+internal enum class Behaviour {
+    /** Manual or stabilised modes with nobody on the sticks: a multirotor holds, a plane flies straight. */
+    MANUAL,
+    /** Hold position (multirotor) or circle here (plane). */
+    HOLD,
+    /** Guided: hold or go where DO_REPOSITION / NAV_TAKEOFF says. */
+    GUIDED,
+    /** Circle around a point. */
+    CIRCLE,
+    /** Fly the mission. */
+    AUTO,
+    /** Return home (and land, for multirotors; circle for planes). */
+    RTL,
+    /** Land here. */
+    LAND,
+    /** Take off and climb to the take-off altitude. */
+    TAKEOFF,
+}
+
+/** Flight-mode semantics per autopilot flavour; names and numbers come from FlightModes. */
+internal object Modes {
+    private val copterNotArmable = setOf("AUTO", "AUTO_RTL", "RTL", "SMART_RTL", "LAND", "CIRCLE", "FLIP", "AUTOTUNE", "AVOID_ADSB", "FOLLOW")
+
+    /** The behaviour of mode [name], or null when the simulated airframe cannot fly it. */
+    fun behaviour(autopilot: Autopilot, type: VehicleType, name: String): Behaviour? = when {
+        autopilot == Autopilot.PX4 -> when (name) {
+            "MANUAL", "STABILIZED", "ACRO", "RATTITUDE", "ALTCTL" -> Behaviour.MANUAL
+            "POSCTL", "OFFBOARD", "AUTO.LOITER", "AUTO.READY", "AUTO.FOLLOW_TARGET" -> Behaviour.HOLD
+            "AUTO.MISSION" -> Behaviour.AUTO
+            "AUTO.RTL" -> Behaviour.RTL
+            "AUTO.LAND", "AUTO.PRECLAND" -> Behaviour.LAND
+            "AUTO.TAKEOFF" -> Behaviour.TAKEOFF
+            else -> null
+        }
+        type.isMultirotor -> when (name) {
+            "AUTO", "AUTO_RTL" -> Behaviour.AUTO
+            "GUIDED", "GUIDED_NOGPS" -> Behaviour.GUIDED
+            "CIRCLE" -> Behaviour.CIRCLE
+            "RTL", "SMART_RTL" -> Behaviour.RTL
+            "LAND" -> Behaviour.LAND
+            else -> Behaviour.HOLD
+        }
+        else -> when {
+            name == "AUTO" -> Behaviour.AUTO
+            name == "RTL" -> Behaviour.RTL
+            name == "LOITER" -> Behaviour.HOLD
+            name == "CIRCLE" -> Behaviour.CIRCLE
+            name == "GUIDED" -> Behaviour.GUIDED
+            name == "TAKEOFF" -> Behaviour.TAKEOFF
+            name.startsWith("Q") || name == "LOITER_ALT_QLAND" -> null // not a QuadPlane
+            else -> Behaviour.MANUAL
+        }
+    }
+
+    /** Why arming in mode [name] is refused, or null when the mode allows arming. */
+    fun armable(autopilot: Autopilot, type: VehicleType, name: String, autoOptions: Int): Boolean = when {
+        autopilot == Autopilot.PX4 -> name != "AUTO.RTL" && name != "AUTO.LAND"
+        type.isMultirotor -> name !in copterNotArmable || (name == "AUTO" && autoOptions and 1 != 0)
+        else -> true
+    }
+}

@@ -1,0 +1,97 @@
+package pod.sim.autopilot
+
+import pod.core.vehicle.Autopilot
+import pod.core.vehicle.VehicleType
+import pod.sim.autopilot.ParamType.INT16
+import pod.sim.autopilot.ParamType.INT32
+import pod.sim.autopilot.ParamType.INT8
+import pod.sim.autopilot.ParamType.REAL32
+
+/**
+ * The parameters each simulated flavour carries: a realistic subset, with the real names, units
+ * and defaults, that the simulated flight reads (so a PARAM_SET changes how it flies). Ranges are
+ * the simulator's own sanity bounds; real autopilots mostly store whatever they are sent.
+ */
+internal object ParamTables {
+
+    /** The table for [autopilot] flying [type], with [systemId] as the system-id parameter. */
+    fun forVehicle(autopilot: Autopilot, type: VehicleType, systemId: Int): List<ParamDef> = when {
+        autopilot == Autopilot.PX4 && type.isMultirotor -> px4Common(systemId) + px4Multirotor
+        autopilot == Autopilot.PX4 -> px4Common(systemId) + px4FixedWing
+        type.isMultirotor -> arduCommon(systemId) + arduCopter
+        else -> arduCommon(systemId) + arduPlane
+    }
+
+    // ArduPilot 4.7 calls the system id MAV_SYSID (SYSID_THISMAV before 4.7).
+    private fun arduCommon(systemId: Int) = listOf(
+        ParamDef("MAV_SYSID", systemId.toDouble(), INT16, 1.0, 255.0),
+        ParamDef("ARMING_CHECK", 1.0, INT32, 0.0, Int.MAX_VALUE.toDouble()),
+        ParamDef("BATT_CAPACITY", 3300.0, INT32, 0.0, 1e6),
+        ParamDef("BATT_LOW_VOLT", 14.0, REAL32, 0.0, 100.0),
+        // Real default 0 (check off); the simulator refuses to arm a 4S pack below ~21 % charge.
+        ParamDef("BATT_ARM_VOLT", 14.6, REAL32, 0.0, 100.0),
+        ParamDef("STAT_BOOTCNT", 1.0, INT16, readOnly = true),
+    )
+
+    private val arduCopter = listOf(
+        ParamDef("WPNAV_SPEED", 500.0, REAL32, 10.0, 2000.0), // cm/s
+        ParamDef("WPNAV_SPEED_UP", 250.0, REAL32, 10.0, 1000.0), // cm/s
+        ParamDef("WPNAV_SPEED_DN", 150.0, REAL32, 10.0, 500.0), // cm/s
+        ParamDef("WPNAV_RADIUS", 200.0, REAL32, 5.0, 1000.0), // cm
+        ParamDef("WPNAV_ACCEL", 250.0, REAL32, 50.0, 500.0), // cm/s²
+        ParamDef("RTL_ALT", 1500.0, INT32, 200.0, 300000.0), // cm
+        ParamDef("RTL_SPEED", 0.0, REAL32, 0.0, 2000.0), // cm/s, 0 = WPNAV_SPEED
+        ParamDef("LAND_SPEED", 50.0, INT16, 30.0, 200.0), // cm/s
+        ParamDef("DISARM_DELAY", 10.0, INT8, 0.0, 127.0), // s
+        ParamDef("CIRCLE_RADIUS", 500.0, REAL32, 0.0, 200000.0), // cm
+        ParamDef("CIRCLE_RATE", 20.0, REAL32, -90.0, 90.0), // deg/s
+        ParamDef("AUTO_OPTIONS", 0.0, INT32, 0.0, Int.MAX_VALUE.toDouble()), // bit 0: allow arming in AUTO
+        ParamDef("FS_GCS_ENABLE", 0.0, INT8, 0.0, 7.0),
+    )
+
+    private val arduPlane = listOf(
+        ParamDef("AIRSPEED_CRUISE", 15.0, REAL32, 5.0, 100.0), // m/s
+        ParamDef("AIRSPEED_MIN", 9.0, REAL32, 5.0, 100.0), // m/s
+        ParamDef("AIRSPEED_MAX", 22.0, REAL32, 5.0, 100.0), // m/s
+        ParamDef("WP_RADIUS", 90.0, INT16, 1.0, 32767.0), // m
+        ParamDef("WP_LOITER_RAD", 60.0, INT16, -32767.0, 32767.0), // m, negative = counter-clockwise
+        ParamDef("RTL_RADIUS", 0.0, INT16, -32767.0, 32767.0), // m, 0 = WP_LOITER_RAD
+        ParamDef("ALT_HOLD_RTL", 10000.0, INT32, -1.0, 1e7), // cm, -1 = current altitude
+        ParamDef("TKOFF_ALT", 50.0, INT16, 0.0, 32767.0), // m
+        ParamDef("ROLL_LIMIT_DEG", 45.0, REAL32, 20.0, 90.0),
+        ParamDef("TECS_CLMB_MAX", 5.0, REAL32, 0.1, 20.0), // m/s
+        ParamDef("TECS_SINK_MAX", 5.0, REAL32, 0.0, 20.0), // m/s
+        ParamDef("LAND_DISARMDELAY", 20.0, INT8, 0.0, 127.0), // s
+        ParamDef("FS_GCS_ENABL", 0.0, INT8, 0.0, 2.0),
+    )
+
+    private fun px4Common(systemId: Int) = listOf(
+        ParamDef("MAV_SYS_ID", systemId.toDouble(), INT32, 1.0, 250.0),
+        ParamDef("MIS_TAKEOFF_ALT", 2.5, REAL32, 0.0, 1000.0), // m above home
+        ParamDef("RTL_RETURN_ALT", 60.0, REAL32, 0.0, 1000.0), // m above home
+        ParamDef("NAV_ACC_RAD", 10.0, REAL32, 0.05, 200.0), // m
+        ParamDef("NAV_LOITER_RAD", 80.0, REAL32, 25.0, 1000.0), // m
+        ParamDef("COM_DISARM_LAND", 2.0, REAL32, -1.0, 20.0), // s
+        ParamDef("COM_DISARM_PRFLT", 10.0, REAL32, -1.0, 20.0), // s
+        ParamDef("BAT_LOW_THR", 0.15, REAL32, 0.12, 0.5),
+        ParamDef("NAV_DLL_ACT", 0.0, INT32, 0.0, 6.0),
+        ParamDef("SYS_AUTOSTART", 4001.0, INT32, 0.0, 9999999.0),
+    )
+
+    private val px4Multirotor = listOf(
+        ParamDef("MPC_XY_CRUISE", 5.0, REAL32, 3.0, 20.0), // m/s
+        ParamDef("MPC_Z_VEL_MAX_UP", 3.0, REAL32, 0.5, 8.0), // m/s
+        ParamDef("MPC_Z_VEL_MAX_DN", 1.5, REAL32, 0.5, 4.0), // m/s
+        ParamDef("MPC_LAND_SPEED", 0.7, REAL32, 0.6, 4.0), // m/s
+        ParamDef("MPC_ACC_HOR", 3.0, REAL32, 2.0, 15.0), // m/s²
+    )
+
+    private val px4FixedWing = listOf(
+        ParamDef("FW_AIRSPD_TRIM", 15.0, REAL32, 0.5, 40.0), // m/s
+        ParamDef("FW_AIRSPD_MIN", 10.0, REAL32, 0.5, 40.0), // m/s
+        ParamDef("FW_AIRSPD_MAX", 20.0, REAL32, 0.5, 40.0), // m/s
+        ParamDef("FW_R_LIM", 50.0, REAL32, 35.0, 65.0), // deg
+        ParamDef("FW_T_CLMB_MAX", 5.0, REAL32, 1.0, 15.0), // m/s
+        ParamDef("FW_T_SINK_MAX", 5.0, REAL32, 2.0, 15.0), // m/s
+    )
+}

@@ -1,0 +1,350 @@
+package pod.sim.autopilot
+
+import pod.core.units.Location
+import pod.core.vehicle.Autopilot
+import pod.core.vehicle.LandedState
+import pod.core.vehicle.VehicleType
+import pod.mavlink.mission.MissionMessage
+import pod.mavlink.mission.MissionServer
+import pod.mavlink.telemetry.FlightModes
+import pod.sim.PhotoEvent
+import pod.sim.SimState
+import pod.sim.flight.Airframe
+import pod.sim.flight.Body
+import pod.sim.flight.FixedWingAirframe
+import pod.sim.flight.Guidance
+import pod.sim.flight.MultirotorAirframe
+import pod.sim.flight.Performance
+import pod.sim.flight.atAltitude
+import pod.sim.flight.horizontalDistance
+import pod.sim.flight.moved
+import kotlin.math.cos
+import kotlin.math.sin
+
+/** What the vehicle is doing, whatever its mode is called. */
+internal sealed interface Activity {
+    /** On the ground. */
+    data object Parked : Activity
+
+    /** Climbing to [altitude] (AMSL), then switching to mode [then] (or holding where it is). */
+    data class Takeoff(val altitude: Double, val then: String?) : Activity
+
+    /** Holding at [center]: hover, or circle at [radius]. */
+    data class Hold(val center: Location, val radius: Double, val clockwise: Boolean = true) : Activity
+
+    /** Flying to [target] at [speed] m/s (null: cruise), then holding there. */
+    data class GoTo(val target: Location, val speed: Double?) : Activity
+
+    /** Returning to launch. */
+    data class Returning(val plan: ReturnPlan) : Activity
+
+    /** Landing (over [at] when given). */
+    data class Landing(val at: Location?) : Activity
+
+    /** Flying the mission. */
+    data object Mission : Activity
+
+    /** Flying straight on [heading] at [altitude]. */
+    data class Cruise(val heading: Double, val altitude: Double) : Activity
+}
+
+/**
+ * The simulated autopilot: modes, arming, commands, missions, parameters and the physics, as a
+ * pure state machine. [step] advances simulated time by a fixed step; commands and messages go in
+ * through [commands] and [params]; what should be sent collects in [drain]. No coroutines, no
+ * clocks: tests drive it by stepping time.
+ */
+internal class SimAutopilot(
+    val autopilot: Autopilot,
+    val type: VehicleType,
+    systemId: Int,
+    home: Location,
+    charge: Double,
+    val missionServer: MissionServer,
+    /** Simulated seconds after boot before GPS and estimator are ready to arm. */
+    private val readyAfter: Double = 2.0,
+) {
+    val multirotor: Boolean = type.isMultirotor || type == VehicleType.OTHER
+    val isPx4: Boolean get() = autopilot == Autopilot.PX4
+    private val airframe: Airframe = if (multirotor) MultirotorAirframe else FixedWingAirframe
+    val params = SimParameters(autopilot, ParamTables.forVehicle(autopilot, type, systemId))
+    val commands = Commands(this)
+    val paramService = ParamService(this)
+    val mission = MissionRunner(this)
+    val camera = Camera()
+    val ground: Double = home.altitude.meters
+
+    var time = 0.0; private set
+    var body = Body(home, heading = 0.0); internal set
+    var home: Location = home; internal set
+    var charge = charge; private set
+    var armed = false; private set
+    var modeName: String = if (isPx4) "AUTO.LOITER" else if (multirotor) "STABILIZE" else "MANUAL"; private set
+    var activity: Activity = Activity.Parked; internal set
+
+    /** Speed overrides from DO_CHANGE_SPEED (m/s), null = the parameter's value. */
+    var cruiseOverride: Double? = null
+    var climbOverride: Double? = null
+    var descentOverride: Double? = null
+
+    private val outbox = ArrayList<SimOutput>()
+    private var disarmAt: Double? = null
+    private var landedByLanding = false
+    private var lastCurrent = -1
+    val reached = ArrayList<Int>()
+    val photos = ArrayList<PhotoEvent>()
+
+    /** True once the simulated GPS has a fix and the estimator is ready. */
+    val positionReady: Boolean get() = time >= readyAfter
+
+    /** The messages to send, oldest first; empties the queue. */
+    fun drain(): List<SimOutput> = outbox.toList().also { outbox.clear() }
+
+    internal fun emit(output: SimOutput) {
+        outbox += output
+    }
+
+    internal fun text(severity: Int, text: String) = emit(SimOutput.Text(severity, text))
+
+    /** A snapshot for telemetry. */
+    fun state(): SimState = SimState(
+        location = body.location, home = home,
+        velocityNed = Triple(body.velocityNorth, body.velocityEast, body.velocityDown),
+        headingDeg = body.heading, charge = charge, armed = armed, landedState = landedState(),
+        customMode = FlightModes.customMode(autopilot, type, modeName) ?: 0, modeName = modeName,
+        airspeed = body.airspeed, throttle = body.throttle, missionCurrent = missionServer.current, positionReady = positionReady,
+    )
+
+    private fun landedState(): LandedState = when {
+        body.onGround && body.airspeed < 0.5 -> LandedState.ON_GROUND
+        body.onGround -> if (activity is Activity.Takeoff) LandedState.TAKEOFF else LandedState.LANDING
+        activity is Activity.Takeoff -> LandedState.TAKEOFF
+        activity is Activity.Landing || (activity as? Activity.Returning)?.plan?.landing == true || mission.landing -> LandedState.LANDING
+        else -> LandedState.IN_AIR
+    }
+
+    /** Flight performance from the parameters and any DO_CHANGE_SPEED overrides. */
+    fun performance(): Performance = when {
+        isPx4 && multirotor -> Performance(
+            cruise = cruiseOverride ?: params["MPC_XY_CRUISE"], climb = climbOverride ?: params["MPC_Z_VEL_MAX_UP"],
+            descent = descentOverride ?: params["MPC_Z_VEL_MAX_DN"], landSpeed = params["MPC_LAND_SPEED"], acceleration = params["MPC_ACC_HOR"],
+        )
+        isPx4 -> Performance(
+            cruise = cruiseOverride ?: params["FW_AIRSPD_TRIM"], climb = climbOverride ?: params["FW_T_CLMB_MAX"],
+            descent = descentOverride ?: params["FW_T_SINK_MAX"], minAirspeed = params["FW_AIRSPD_MIN"], maxAirspeed = params["FW_AIRSPD_MAX"],
+            bankLimit = params["FW_R_LIM"], loiterRadius = params["NAV_LOITER_RAD"],
+        )
+        multirotor -> Performance(
+            cruise = cruiseOverride ?: (params["WPNAV_SPEED"] / 100), climb = climbOverride ?: (params["WPNAV_SPEED_UP"] / 100),
+            descent = descentOverride ?: (params["WPNAV_SPEED_DN"] / 100), landSpeed = params["LAND_SPEED"] / 100,
+            acceleration = params["WPNAV_ACCEL"] / 100, circleRate = kotlin.math.abs(params["CIRCLE_RATE"]).coerceAtLeast(1.0),
+        )
+        else -> Performance(
+            cruise = cruiseOverride ?: params["AIRSPEED_CRUISE"], climb = climbOverride ?: params["TECS_CLMB_MAX"],
+            descent = descentOverride ?: params["TECS_SINK_MAX"], minAirspeed = params["AIRSPEED_MIN"], maxAirspeed = params["AIRSPEED_MAX"],
+            bankLimit = params["ROLL_LIMIT_DEG"], loiterRadius = kotlin.math.abs(params["WP_LOITER_RAD"]),
+        )
+    }
+
+    /** A plane's loiter radius (positive) and direction. */
+    fun loiterRadius(): Pair<Double, Boolean> = when {
+        isPx4 -> params["NAV_LOITER_RAD"] to true
+        multirotor -> 0.0 to true
+        else -> params["WP_LOITER_RAD"].let { kotlin.math.abs(it) to (it >= 0) }
+    }
+
+    /** Acceptance radius for waypoints: [requested] when positive, else the flavour's parameter. */
+    fun acceptanceRadius(requested: Float): Double {
+        if (requested > 0) return requested.toDouble()
+        return when {
+            isPx4 && multirotor -> params["NAV_ACC_RAD"]
+            isPx4 -> maxOf(params["NAV_ACC_RAD"], FixedWingAirframe.turnRadius(params["FW_AIRSPD_TRIM"], params["FW_R_LIM"]))
+            multirotor -> params["WPNAV_RADIUS"] / 100
+            else -> params["WP_RADIUS"]
+        }
+    }
+
+    /** Advances simulated time by [dt] seconds. */
+    fun step(dt: Double) {
+        time += dt
+        charge = (if (armed) charge - dt / FULL_DRAIN_SECONDS else charge + dt / FULL_RECHARGE_SECONDS).coerceIn(0.0, 1.0)
+        val guidance = guidance()
+        body = airframe.step(body, guidance, performance(), ground, armed, dt)
+        afterStep()
+        for (photo in camera.step(time, body.location, if (activity == Activity.Mission) missionServer.current else null)) {
+            photos += photo
+            emit(SimOutput.Photo(photo))
+        }
+        commands.step(dt)
+        if (missionServer.current != lastCurrent) {
+            lastCurrent = missionServer.current
+            emit(SimOutput.MissionCurrent(lastCurrent))
+        }
+    }
+
+    private fun guidance(): Guidance = when (val a = activity) {
+        Activity.Parked -> Guidance.Idle
+        is Activity.Takeoff -> if (armed) Guidance.Climb(a.altitude) else Guidance.Idle
+        is Activity.Hold -> Guidance.Loiter(a.center, a.radius, a.clockwise)
+        is Activity.GoTo -> if (multirotor) Guidance.GoTo(a.target, a.speed) else Guidance.Loiter(a.target, loiterRadius().first, loiterRadius().second)
+        is Activity.Returning -> a.plan.guidance(body)
+        is Activity.Landing -> Guidance.Land(a.at)
+        Activity.Mission -> mission.guidance()
+        is Activity.Cruise -> Guidance.Cruise(a.heading, a.altitude)
+    }
+
+    private fun afterStep() {
+        when (val a = activity) {
+            is Activity.Takeoff -> if (body.location.altitude.meters >= a.altitude - if (multirotor) 0.3 else 2.0) {
+                if (a.then != null) setMode(a.then) else activity = holdHere()
+            }
+            is Activity.GoTo -> if (multirotor && horizontalDistance(body.location, a.target) < 0.5 &&
+                kotlin.math.abs(body.location.altitude.meters - a.target.altitude.meters) < 0.5
+            ) {
+                activity = Activity.Hold(a.target, 0.0)
+            }
+            else -> Unit
+        }
+        val landing = activity is Activity.Landing || (activity as? Activity.Returning)?.plan?.landing == true || mission.landing
+        if (body.onGround && body.airspeed < 0.1 && activity != Activity.Parked && activity !is Activity.Takeoff && landing) {
+            landedByLanding = true
+            if (activity == Activity.Mission) mission.touchedDown() else activity = Activity.Parked
+        }
+        if (activity == Activity.Mission && mission.finishedOnGround) activity = Activity.Parked
+        autoDisarm()
+    }
+
+    private fun autoDisarm() {
+        val parked = armed && body.onGround && body.airspeed < 0.1 && (activity == Activity.Parked || (activity == Activity.Mission && !mission.wantsToFly()))
+        if (!parked) {
+            disarmAt = null
+            if (!body.onGround) landedByLanding = false
+            return
+        }
+        val at = disarmAt ?: run {
+            val delay = when {
+                isPx4 -> if (landedByLanding) params["COM_DISARM_LAND"] else params["COM_DISARM_PRFLT"]
+                multirotor -> if (landedByLanding) 1.0 else params["DISARM_DELAY"].takeIf { it > 0 } ?: -1.0
+                else -> if (landedByLanding) params["LAND_DISARMDELAY"].takeIf { it > 0 } ?: -1.0 else -1.0
+            }
+            if (delay < 0) return
+            (time + delay).also { disarmAt = it }
+        }
+        if (time >= at) {
+            disarm()
+            text(Severity.INFO, if (isPx4) "Disarmed by auto disarm" else "Disarming motors")
+        }
+    }
+
+    /** Arms (checks are the caller's business). */
+    fun arm() {
+        armed = true
+        landedByLanding = false
+        disarmAt = null
+        if (activity == Activity.Parked && Modes.behaviour(autopilot, type, modeName) == Behaviour.TAKEOFF) enterMode(modeName)
+    }
+
+    /** Disarms; in the air the vehicle falls (a multirotor) or glides down (a plane). */
+    fun disarm() {
+        armed = false
+        disarmAt = null
+        if (body.onGround) activity = Activity.Parked
+    }
+
+    /** Switches to mode [name] and starts what it does (the caller checked that it may). */
+    fun setMode(name: String) {
+        modeName = name
+        enterMode(name)
+    }
+
+    private fun enterMode(name: String) {
+        val flying = !body.onGround
+        val alt = body.location.altitude.meters
+        if (activity == Activity.Mission && Modes.behaviour(autopilot, type, name) != Behaviour.AUTO) mission.stop()
+        activity = when (Modes.behaviour(autopilot, type, name) ?: Behaviour.HOLD) {
+            Behaviour.MANUAL -> when {
+                !flying -> Activity.Parked
+                multirotor -> holdHere()
+                else -> Activity.Cruise(body.heading, alt)
+            }
+            Behaviour.HOLD, Behaviour.GUIDED -> if (flying) holdHere() else Activity.Parked
+            Behaviour.CIRCLE -> if (!flying) {
+                Activity.Parked
+            } else if (multirotor) {
+                val r = params["CIRCLE_RADIUS"] / 100
+                val h = Math.toRadians(body.heading)
+                Activity.Hold(moved(body.location, cos(h) * r, sin(h) * r, 0.0), r, params["CIRCLE_RATE"] >= 0)
+            } else {
+                holdHere()
+            }
+            Behaviour.AUTO -> {
+                mission.start()
+                Activity.Mission
+            }
+            Behaviour.RTL -> if (flying) Activity.Returning(returnPlan()) else Activity.Parked
+            Behaviour.LAND -> if (flying) Activity.Landing(if (multirotor) null else body.location) else Activity.Parked
+            Behaviour.TAKEOFF -> {
+                val target = takeoffAltitude(null)
+                when {
+                    flying && alt >= target - 1 -> holdHere()
+                    else -> Activity.Takeoff(target, if (isPx4) "AUTO.LOITER" else if (multirotor) null else "LOITER")
+                }
+            }
+        }
+    }
+
+    /** Take-off altitude (AMSL) for a take-off with [requested] metres (null: the flavour's default). */
+    fun takeoffAltitude(requested: Double?): Double = home.altitude.meters + (
+        requested ?: when {
+            isPx4 -> params["MIS_TAKEOFF_ALT"]
+            multirotor -> 2.5
+            else -> params["TKOFF_ALT"]
+        }
+        )
+
+    /** Holding here: hovering, or circling at the loiter radius. */
+    fun holdHere(): Activity = if (multirotor) {
+        Activity.Hold(body.location, 0.0)
+    } else {
+        loiterRadius().let { (r, cw) -> Activity.Hold(body.location, r, cw) }
+    }
+
+    /** A return to launch with this flavour's altitude and radius. */
+    fun returnPlan(): ReturnPlan {
+        val alt = body.location.altitude.meters
+        val (radius, cw) = loiterRadius()
+        return when {
+            isPx4 -> ReturnPlan(home, maxOf(home.altitude.meters + params["RTL_RETURN_ALT"], if (multirotor) alt else 0.0), multirotor, radius, cw)
+            multirotor -> ReturnPlan(home, maxOf(home.altitude.meters + params["RTL_ALT"] / 100, alt), true, 0.0, true)
+            else -> {
+                val rtlAlt = params["ALT_HOLD_RTL"].let { if (it < 0) alt else home.altitude.meters + it / 100 }
+                val r = params["RTL_RADIUS"].let { if (it == 0.0) radius to cw else kotlin.math.abs(it) to (it > 0) }
+                ReturnPlan(home, rtlAlt, false, r.first, r.second)
+            }
+        }
+    }
+
+    /** Moves home to [location] and announces it. */
+    fun setHome(location: Location) {
+        home = location
+        emit(SimOutput.HomeChanged)
+    }
+
+    /** Makes [seq] the mission server's current item (as MISSION_SET_CURRENT would). */
+    fun setCurrent(seq: Int) {
+        missionServer.onMessage(MissionMessage.SetCurrent(seq), 0)
+    }
+
+    /** The vehicle is flying (not on the ground). */
+    val flying: Boolean get() = !body.onGround
+
+    /** [location] at altitude [amsl]. */
+    fun at(location: Location, amsl: Double): Location = atAltitude(location, amsl)
+
+    companion object {
+        /** A full pack lasts 20 minutes of flight. */
+        const val FULL_DRAIN_SECONDS = 20 * 60.0
+        /** An empty pack is full again after an hour on the ground (a charging pad or a swap). */
+        const val FULL_RECHARGE_SECONDS = 60 * 60.0
+    }
+}

@@ -1,0 +1,76 @@
+package pod.sim.autopilot
+
+import pod.core.vehicle.Autopilot
+import kotlin.math.roundToLong
+
+/** MAV_PARAM_TYPE of a parameter. */
+internal enum class ParamType(val mav: Int, val isInteger: Boolean) {
+    UINT8(1, true), INT8(2, true), UINT16(3, true), INT16(4, true), UINT32(5, true), INT32(6, true), REAL32(9, false),
+}
+
+/** One parameter: name, default, type, the range the simulator accepts, and whether it can be written. */
+internal data class ParamDef(
+    val name: String,
+    val default: Double,
+    val type: ParamType = ParamType.REAL32,
+    val min: Double = -Double.MAX_VALUE,
+    val max: Double = Double.MAX_VALUE,
+    val readOnly: Boolean = false,
+)
+
+/** Why a write was refused. */
+internal enum class ParamWrite { STORED, UNKNOWN, READ_ONLY, OUT_OF_RANGE }
+
+/**
+ * A vehicle's parameter table in the order it lists it, with the wire encoding of its flavour:
+ * ArduPilot sends every value as a float carrying the number (a C cast, whatever the type);
+ * PX4 sends integer parameters bytewise, the int32's bits inside the float field.
+ */
+internal class SimParameters(private val autopilot: Autopilot, definitions: List<ParamDef>) {
+    private val defs: List<ParamDef> = definitions
+    private val byName: Map<String, Int> = defs.withIndex().associate { (i, d) -> d.name to i }
+    private val values: DoubleArray = DoubleArray(defs.size) { defs[it].default }
+
+    /** How many parameters there are (PARAM_VALUE's param_count). */
+    val count: Int get() = defs.size
+
+    /** The parameter's position in the list, or null when there is no such parameter. */
+    fun index(name: String): Int? = byName[name]
+
+    /** The definition at [index], or null. */
+    fun at(index: Int): ParamDef? = defs.getOrNull(index)
+
+    /** The current value of [name]; throws for an unknown name (a bug in the simulator). */
+    operator fun get(name: String): Double = values[byName[name] ?: error("no parameter $name")]
+
+    /** The current value of [name], or null when the table has no such parameter. */
+    fun valueOf(name: String): Double? = byName[name]?.let { values[it] }
+
+    /** Stores [value] for [name] after checking that it exists, is writable and in range. */
+    fun set(name: String, value: Double): ParamWrite {
+        val i = byName[name] ?: return ParamWrite.UNKNOWN
+        val def = defs[i]
+        if (def.readOnly) return ParamWrite.READ_ONLY
+        if (!value.isFinite() || value < def.min || value > def.max) return ParamWrite.OUT_OF_RANGE
+        values[i] = if (def.type.isInteger) value.roundToLong().toDouble() else value.toFloat().toDouble()
+        return ParamWrite.STORED
+    }
+
+    /** The float that PARAM_VALUE carries for the parameter at [index]. */
+    fun wireValue(index: Int): Float {
+        val def = defs[index]
+        val v = values[index]
+        return if (autopilot == Autopilot.PX4 && def.type.isInteger) Float.fromBits(v.toLong().toInt()) else v.toFloat()
+    }
+
+    /** The number a PARAM_SET's float [raw] means for the parameter at [index]. */
+    fun fromWire(index: Int, raw: Float): Double {
+        val def = defs[index]
+        return when {
+            autopilot == Autopilot.PX4 && def.type.isInteger -> raw.toRawBits().toDouble()
+            // ArduPilot rounds to the nearest integer (half away from zero) when it stores an integer parameter.
+            def.type.isInteger -> if (raw.isFinite()) Math.round(raw.toDouble()).toDouble() else Double.NaN
+            else -> raw.toDouble()
+        }
+    }
+}

@@ -1,0 +1,233 @@
+package pod.sim.autopilot
+
+import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.collections.shouldContain
+import io.kotest.matchers.collections.shouldBeEmpty
+import io.kotest.matchers.doubles.plusOrMinus
+import io.kotest.matchers.doubles.shouldBeLessThan
+import io.kotest.matchers.shouldBe
+import pod.core.units.m
+import pod.core.vehicle.Autopilot
+import pod.core.vehicle.LandedState
+import pod.core.vehicle.VehicleType
+import pod.sim.flight.horizontalDistance
+import kotlin.math.roundToLong
+
+class CommandTest : StringSpec({
+
+    fun texts(out: List<SimOutput>) = out.filterIsInstance<SimOutput.Text>()
+
+    "ArduPilot refuses to arm on a low battery with FAILED and a CRITICAL PreArm STATUSTEXT" {
+        val ap = autopilot(charge = 0.1)
+        ap.run(2.5)
+        val out = ArrayList<SimOutput>()
+        ap.command(CommandRequest(400, param1 = 1f), out) shouldBe MavResult.FAILED
+        texts(out) shouldContain SimOutput.Text(Severity.CRITICAL, "PreArm: Battery 1 below minimum arming voltage")
+        ap.armed shouldBe false
+        ap.command(CommandRequest(400, param1 = 1f, param2 = 21196f)) shouldBe MavResult.ACCEPTED // forced
+        ap.armed shouldBe true
+    }
+
+    "PX4 refuses to arm on a low battery with TEMPORARILY_REJECTED and says why" {
+        val ap = autopilot(Autopilot.PX4, charge = 0.1)
+        ap.run(2.5)
+        val out = ArrayList<SimOutput>()
+        ap.command(CommandRequest(400, param1 = 1f), out) shouldBe MavResult.TEMPORARILY_REJECTED
+        texts(out).map { it.text } shouldContain "Arming denied: low battery"
+    }
+
+    "arming before the GPS is ready is refused; once ready it is accepted, and arming twice is accepted again" {
+        val ap = autopilot()
+        val out = ArrayList<SimOutput>()
+        ap.command(CommandRequest(400, param1 = 1f), out) shouldBe MavResult.FAILED
+        texts(out).map { it.text } shouldContain "PreArm: Need 3D Fix"
+        ap.run(2.5)
+        ap.armCommand() shouldBe MavResult.ACCEPTED
+        ap.armCommand() shouldBe MavResult.ACCEPTED
+    }
+
+    "ArduCopter refuses to arm in AUTO and to enter AUTO armed on the ground without a take-off item" {
+        val ap = autopilot()
+        ap.run(2.5)
+        ap.mode("AUTO") shouldBe MavResult.FAILED // no mission
+        ap.load(listOf(homeItem(), item(16, 10.0, 0.0, 10.0)))
+        ap.mode("AUTO") shouldBe MavResult.ACCEPTED
+        val out = ArrayList<SimOutput>()
+        ap.command(CommandRequest(400, param1 = 1f), out) shouldBe MavResult.FAILED
+        texts(out).map { it.text } shouldContain "Arm: Mode not armable"
+        ap.mode("GUIDED")
+        ap.armCommand()
+        out.clear()
+        ap.command(CommandRequest(300), out) shouldBe MavResult.FAILED
+        texts(out).map { it.text } shouldContain "Auto: Missing Takeoff Cmd"
+        ap.command(CommandRequest(300, param1 = 2f)) shouldBe MavResult.DENIED // first/last item not supported
+    }
+
+    "PX4 rejects an unknown mode and AUTO.MISSION without a mission with TEMPORARILY_REJECTED" {
+        val ap = autopilot(Autopilot.PX4)
+        ap.command(CommandRequest(176, param1 = 1f, param2 = 4f, param3 = 4f)) shouldBe MavResult.TEMPORARILY_REJECTED
+        ap.command(CommandRequest(176, param1 = 1f, param2 = 42f)) shouldBe MavResult.TEMPORARILY_REJECTED
+        ap.command(CommandRequest(176, param1 = 1f, param2 = 3f)) shouldBe MavResult.ACCEPTED
+        ap.modeName shouldBe "POSCTL"
+    }
+
+    "ArduPilot answers the legacy SET_MODE message with a COMMAND_ACK for command 11" {
+        val ap = autopilot()
+        ap.commands.handleSetMode(1, 4, 255, 190)
+        ap.drain().filterIsInstance<SimOutput.Ack>().single() shouldBe SimOutput.Ack(11, MavResult.ACCEPTED, 0, 255, 190)
+        ap.modeName shouldBe "GUIDED"
+        ap.commands.handleSetMode(1, 99, 255, 190)
+        ap.drain().filterIsInstance<SimOutput.Ack>().single().result shouldBe MavResult.FAILED
+    }
+
+    "takeoff while disarmed: ArduCopter FAILED; PX4 accepts, switches to AUTO.TAKEOFF and climbs once armed" {
+        val copter = autopilot()
+        copter.run(2.5)
+        copter.mode("GUIDED")
+        copter.command(CommandRequest(22, z = 10f)) shouldBe MavResult.FAILED
+        val px4 = autopilot(Autopilot.PX4)
+        px4.run(2.5)
+        px4.command(CommandRequest(22, z = Float.NaN)) shouldBe MavResult.ACCEPTED
+        px4.modeName shouldBe "AUTO.TAKEOFF"
+        px4.run(5.0)
+        px4.body.onGround shouldBe true
+        px4.armCommand() shouldBe MavResult.ACCEPTED
+        px4.runUntil(30.0) { it.modeName == "AUTO.LOITER" }
+        px4.body.location.altitude.meters - HOME.altitude.meters shouldBe (2.5 plusOrMinus 0.3) // MIS_TAKEOFF_ALT
+    }
+
+    "ArduCopter takes off in GUIDED, refuses a disarm in the air, lands in LAND and disarms on the ground" {
+        val ap = autopilot()
+        ap.run(2.5)
+        ap.mode("GUIDED")
+        ap.armCommand()
+        ap.command(CommandRequest(22, z = 15f, frame = 6)) shouldBe MavResult.DENIED // COMMAND_INT wants the relative-alt frame
+        ap.command(CommandRequest(22, z = 15f)) shouldBe MavResult.ACCEPTED
+        ap.runUntil(30.0) { it.state().landedState == LandedState.IN_AIR }
+        ap.body.location.altitude.meters - HOME.altitude.meters shouldBe (15.0 plusOrMinus 0.3)
+        ap.command(CommandRequest(400, param1 = 0f)) shouldBe MavResult.FAILED
+        ap.command(CommandRequest(21)) shouldBe MavResult.ACCEPTED
+        ap.modeName shouldBe "LAND"
+        ap.state().landedState shouldBe LandedState.LANDING
+        ap.runUntil(60.0) { !it.armed }
+        ap.state().landedState shouldBe LandedState.ON_GROUND
+    }
+
+    "DO_REPOSITION: ArduPilot wants COMMAND_INT; as COMMAND_INT in GUIDED the copter flies there and hovers" {
+        val ap = autopilot()
+        ap.run(2.5)
+        ap.mode("GUIDED")
+        ap.armCommand()
+        ap.command(CommandRequest(22, z = 10f))
+        ap.run(8.0)
+        val target = HOME.offset(north = 60.m, east = (-40).m)
+        val lat = (target.latitude * 1e7).roundToLong().toDouble()
+        val lon = (target.longitude * 1e7).roundToLong().toDouble()
+        ap.command(CommandRequest(192, param1 = -1f, x = target.latitude, y = target.longitude, z = 30f)) shouldBe MavResult.UNSUPPORTED
+        ap.command(CommandRequest(192, param1 = -1f, x = lat, y = lon, z = 30f, frame = 6)) shouldBe MavResult.ACCEPTED
+        ap.run(40.0)
+        horizontalDistance(ap.body.location, target) shouldBeLessThan 0.5
+        ap.body.location.altitude.meters - HOME.altitude.meters shouldBe (30.0 plusOrMinus 0.3)
+    }
+
+    "PX4 accepts DO_REPOSITION as COMMAND_LONG and holds there; a plane circles the new point" {
+        val ap = autopilot(Autopilot.PX4, VehicleType.FIXED_WING)
+        ap.run(2.5)
+        ap.command(CommandRequest(22, z = Float.NaN))
+        ap.armCommand()
+        ap.runUntil(60.0) { it.modeName == "AUTO.LOITER" }
+        val target = HOME.offset(north = 500.m, east = 0.m)
+        ap.command(CommandRequest(192, param1 = -1f, param2 = 1f, x = target.latitude, y = target.longitude, z = (HOME.altitude.meters + 80).toFloat())) shouldBe MavResult.ACCEPTED
+        ap.run(200.0)
+        horizontalDistance(ap.body.location, target) shouldBe (80.0 plusOrMinus 12.0) // NAV_LOITER_RAD
+    }
+
+    "commands a flavour does not have are UNSUPPORTED" {
+        autopilot().command(CommandRequest(42424)) shouldBe MavResult.UNSUPPORTED
+        autopilot(Autopilot.PX4).command(CommandRequest(193, param1 = 0f)) shouldBe MavResult.UNSUPPORTED
+        autopilot(type = VehicleType.FIXED_WING).command(CommandRequest(193, param1 = 0f)) shouldBe MavResult.UNSUPPORTED
+        autopilot(type = VehicleType.FIXED_WING).command(CommandRequest(21)) shouldBe MavResult.UNSUPPORTED
+        autopilot().command(CommandRequest(189)) shouldBe MavResult.FAILED // no DO_LAND_START in the mission
+    }
+
+    "PREFLIGHT_CALIBRATION answers IN_PROGRESS with rising progress, then ACCEPTED; armed it is refused" {
+        val ap = autopilot()
+        ap.command(CommandRequest(241, param3 = 1f)) shouldBe MavResult.IN_PROGRESS
+        val acks = ArrayList<SimOutput.Ack>()
+        ap.runUntil(5.0, check = { acks += it.drain().filterIsInstance<SimOutput.Ack>() }) { acks.any { it.result == MavResult.ACCEPTED } }
+        acks.map { it.result to it.progress } shouldBe listOf(5 to 25, 5 to 50, 5 to 75, 0 to 0)
+        ap.time shouldBe (2.0 plusOrMinus 0.06)
+        ap.run(1.0)
+        ap.armCommand()
+        ap.command(CommandRequest(241, param3 = 1f)) shouldBe MavResult.TEMPORARILY_REJECTED
+    }
+
+    "DO_CHANGE_SPEED changes the cruise speed; ArduPilot denies a non-positive speed" {
+        val ap = autopilot()
+        ap.command(CommandRequest(178, param1 = 1f, param2 = 8f)) shouldBe MavResult.ACCEPTED
+        ap.performance().cruise shouldBe 8.0
+        ap.command(CommandRequest(178, param1 = 1f, param2 = -1f)) shouldBe MavResult.DENIED
+        autopilot(Autopilot.PX4).command(CommandRequest(178, param1 = 1f, param2 = -1f)) shouldBe MavResult.ACCEPTED
+    }
+
+    "DO_SET_HOME moves home to the current location or to the given one" {
+        val ap = autopilot()
+        val there = HOME.offset(north = 100.m, east = 0.m)
+        ap.command(CommandRequest(179, x = there.latitude, y = there.longitude, z = 150f)) shouldBe MavResult.ACCEPTED
+        horizontalDistance(ap.home, there) shouldBeLessThan 0.1
+        ap.home.altitude.meters shouldBe (150.0 plusOrMinus 1e-3)
+        ap.command(CommandRequest(179, param1 = 1f)) shouldBe MavResult.ACCEPTED
+        ap.home shouldBe ap.body.location
+    }
+
+    "parameters: ArduPilot sends floats, PX4 sends INT32 bytewise; writes echo the stored value and change the flight" {
+        val ardu = autopilot()
+        ardu.paramService.set("WPNAV_SPEED", 1000f)
+        val echo = ardu.drain().filterIsInstance<SimOutput.Param>().single()
+        ardu.params.at(echo.index)!!.name shouldBe "WPNAV_SPEED"
+        ardu.params.wireValue(echo.index) shouldBe 1000f
+        ardu.performance().cruise shouldBe 10.0
+        ardu.paramService.set("DISARM_DELAY", 5f)
+        ardu.params.wireValue(ardu.params.index("DISARM_DELAY")!!) shouldBe 5f
+        ardu.paramService.set("NO_SUCH_PARAM", 1f)
+        ardu.drain().filterIsInstance<SimOutput.Param>().size shouldBe 1 // DISARM_DELAY only; the unknown one is ignored
+        ardu.paramService.set("STAT_BOOTCNT", 9f)
+        val out = ardu.drain()
+        texts(out).map { it.text } shouldContain "Param write denied (STAT_BOOTCNT)"
+        ardu.params["STAT_BOOTCNT"] shouldBe 1.0
+        ardu.paramService.set("RTL_ALT", 1e9f)
+        ardu.drain().filterIsInstance<SimOutput.Param>().size shouldBe 1
+        ardu.params["RTL_ALT"] shouldBe 1500.0
+
+        val px4 = autopilot(Autopilot.PX4)
+        val sysId = px4.params.index("MAV_SYS_ID")!!
+        px4.params.wireValue(sysId).toRawBits() shouldBe 1
+        px4.paramService.set("MAV_SYS_ID", Float.fromBits(7))
+        px4.drain().filterIsInstance<SimOutput.Param>().single().index shouldBe sysId
+        px4.params["MAV_SYS_ID"] shouldBe 7.0
+        px4.params.wireValue(sysId).toRawBits() shouldBe 7
+        px4.paramService.set("MPC_XY_CRUISE", 8f)
+        px4.drain()
+        px4.params.wireValue(px4.params.index("MPC_XY_CRUISE")!!) shouldBe 8f
+
+        px4.paramService.list()
+        val listed = px4.drain().filterIsInstance<SimOutput.Param>()
+        listed.map { it.index } shouldBe (0 until px4.params.count).toList()
+        px4.paramService.read("", 1)
+        px4.paramService.read("NAV_ACC_RAD", -1)
+        px4.paramService.read("NOPE", -1)
+        px4.drain().filterIsInstance<SimOutput.Param>().map { it.index } shouldBe listOf(1, px4.params.index("NAV_ACC_RAD"))
+    }
+
+    "a vehicle armed on the ground that never takes off disarms itself after the flavour's delay" {
+        val ap = autopilot(Autopilot.PX4)
+        ap.run(2.5)
+        ap.armCommand()
+        ap.run(9.0)
+        ap.armed shouldBe true
+        ap.run(1.5)
+        ap.armed shouldBe false
+        autopilot(type = VehicleType.FIXED_WING).apply { run(2.5); arm(); run(60.0) }.armed shouldBe true
+        emptyList<Int>().shouldBeEmpty()
+    }
+})
