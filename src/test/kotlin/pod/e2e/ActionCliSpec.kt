@@ -30,6 +30,9 @@ class ActionCliSpec : StringSpec({
                     withContext(Dispatchers.IO) { Pod(out).parse(args.toList() + listOf("--connect", "udpin:127.0.0.1:$port", "--sysid", "51", "--json")) }
                     return out.lines.last()
                 }
+                // At 5x a parked copter's 10 s auto-disarm would beat the 1 Hz heartbeat that confirms arming.
+                pod("param", "set", "DISARM_DELAY", "0") shouldContain "\"value\":0.0"
+                pod("param", "get", "WPNAV_SPEED") shouldContain "\"value\":500.0"
                 pod("mode", "guided") shouldContain "\"mode\":\"GUIDED\""
                 pod("arm") shouldContain "\"armed\":true"
                 pod("takeoff", "12") shouldContain "\"action\":\"takeoff\""

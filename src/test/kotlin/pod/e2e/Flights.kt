@@ -57,11 +57,25 @@ internal object Flights {
         item(7, NAV_LAND, home, 0.0),
     )
 
-    /** The vehicle [systemId] once [gcs] has heard it and has its position. */
+    /** The vehicle [systemId] once [gcs] has heard it, has its position and a 3D GPS fix (it can arm). */
     suspend fun vehicle(gcs: GroundStation, systemId: Int): MavlinkVehicle {
         val vehicle = withTimeout(15.seconds) { gcs.vehicles.first { systemId in it } }.getValue(systemId)
         withTimeout(15.seconds) { vehicle.telemetry.position.first { it != null } }
+        withTimeout(15.seconds) { vehicle.telemetry.gps.first { it?.has3dFix == true } }
         return vehicle
+    }
+
+    /**
+     * Turns off the autopilot's disarm of a vehicle armed on the ground that has not taken off
+     * (DISARM_DELAY 0 on ArduCopter, COM_DISARM_PRFLT -1 on PX4). With an accelerated time scale
+     * its 10 s pass before the 1 Hz heartbeat has even confirmed the arming.
+     */
+    suspend fun keepArmedOnGround(vehicle: MavlinkVehicle) {
+        if (vehicle.identity.value.autopilot == pod.core.vehicle.Autopilot.PX4) {
+            vehicle.params.write("COM_DISARM_PRFLT", -1.0)
+        } else if (vehicle.identity.value.type != pod.core.vehicle.VehicleType.FIXED_WING) {
+            vehicle.params.write("DISARM_DELAY", 0.0)
+        }
     }
 
     /** Starts recording the items [vehicle] reports reached; cancel the returned job when done. */

@@ -52,6 +52,7 @@ class VehicleControlSpec : StringSpec({
         "a ${autopilot.name} copter arms, takes off, goes to a point, lands and disarms, each step confirmed" {
             flying(SimVehicleConfig(systemId = 41, autopilot = autopilot, type = type, timeScale = 10.0)) { v, _ ->
                 val home = v.telemetry.position.value!!.location
+                Flights.keepArmedOnGround(v)
                 v.action.arm()
                 v.telemetry.armed.value shouldBe true
                 v.action.takeoff(15.m)
@@ -78,6 +79,7 @@ class VehicleControlSpec : StringSpec({
                 sim.start(this)
                 val v = Flights.vehicle(gcs, 42)
                 val home = v.telemetry.position.value!!.location
+                Flights.keepArmedOnGround(v)
                 v.action.arm()
                 v.action.takeoff(10.m)
                 val target = home.offset(north = 25.m, east = 0.m, up = 10.m)

@@ -1,16 +1,20 @@
 package pod.e2e
 
+import io.dronefleet.mavlink.common.GlobalPositionInt
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.doubles.shouldBeLessThan
 import io.kotest.matchers.shouldBe
+import kotlin.math.abs
+import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.coroutineScope
-import kotlinx.coroutines.flow.drop
-import kotlinx.coroutines.flow.filterNotNull
 import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.flow.map
+import kotlinx.coroutines.flow.mapNotNull
 import kotlinx.coroutines.flow.take
 import kotlinx.coroutines.flow.toList
 import kotlinx.coroutines.withTimeout
 import pod.core.units.Location
+import pod.core.units.m
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.LandedState
 import pod.core.vehicle.VehicleType
@@ -18,8 +22,6 @@ import pod.e2e.Flights.recordReached
 import pod.mavlink.GroundStation
 import pod.sim.SimVehicle
 import pod.sim.SimVehicleConfig
-import kotlin.math.abs
-import kotlin.time.Duration.Companion.seconds
 
 class VehicleFlightSpec : StringSpec({
 
@@ -34,6 +36,7 @@ class VehicleFlightSpec : StringSpec({
                 val mission = Flights.copterSurvey(home)
                 vehicle.mission.upload(mission)
                 val (reached, recording) = recordReached(vehicle)
+                Flights.keepArmedOnGround(vehicle)
                 vehicle.action.arm()
                 vehicle.action.startMission()
                 vehicle.action.awaitLanded(timeout = 60.seconds)
@@ -60,6 +63,7 @@ class VehicleFlightSpec : StringSpec({
                 val home = SimVehicleConfig.DEFAULT_HOME
                 vehicle.mission.upload(Flights.planeCircuit(home))
                 val (reached, recording) = recordReached(vehicle)
+                Flights.keepArmedOnGround(vehicle)
                 vehicle.action.arm()
                 vehicle.action.startMission()
                 // In the air it never flies slower than its minimum airspeed.
@@ -85,23 +89,25 @@ class VehicleFlightSpec : StringSpec({
                     val vehicle = Flights.vehicle(gcs, 33)
                     val home = SimVehicleConfig.DEFAULT_HOME
                     vehicle.mission.upload(Flights.copterSurvey(home))
-                    vehicle.action.arm()
+                    Flights.keepArmedOnGround(vehicle)
+                vehicle.action.arm()
                     vehicle.action.startMission()
                     withTimeout(60.seconds) { vehicle.telemetry.missionCurrent.first { it == 3 } }
                     vehicle.action.pauseMission()
-                    // Settled: two position reports in a row (at 4 Hz) less than 0.3 m apart.
+                    // Every GLOBAL_POSITION_INT (4 Hz), not the StateFlow, which skips repeats of a vehicle standing still.
+                    val reports = vehicle.messages.mapNotNull { it.message as? GlobalPositionInt }.map { Location(it.lat() / 1e7, it.lon() / 1e7, (it.relativeAlt() / 1000.0).m) }
                     val settled = withTimeout(30.seconds) {
                         var last: Location? = null
-                        vehicle.telemetry.position.filterNotNull().first { p ->
+                        reports.first { p ->
                             val previous = last
-                            last = p.location
-                            previous != null && previous.distanceTo(p.location).meters < 0.3
+                            last = p
+                            previous != null && previous.distanceTo(p).meters < 0.3
                         }
                     }
-                    val held = withTimeout(30.seconds) { vehicle.telemetry.position.filterNotNull().drop(1).take(12).toList() }
+                    val held = withTimeout(30.seconds) { reports.take(12).toList() }
                     for (p in held) {
-                        p.location.distanceTo(settled.location).meters shouldBeLessThan 1.0
-                        abs(p.relativeAltitude.meters - settled.relativeAltitude.meters) shouldBeLessThan 0.5
+                        p.distanceTo(settled).meters shouldBeLessThan 1.0
+                        abs(p.altitude.meters - settled.altitude.meters) shouldBeLessThan 0.5
                     }
                     vehicle.telemetry.missionCurrent.value shouldBe 3
                     val (reached, recording) = recordReached(vehicle)

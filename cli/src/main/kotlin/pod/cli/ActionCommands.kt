@@ -77,6 +77,9 @@ internal class RtlCommand(out: Output) : ActionCommand(out, "rtl", "Return to la
 }
 
 internal class GotoCommand(out: Output) : ActionCommand(out, "goto", "Fly to LAT LON at ALT metres above home and hold there.") {
+    // A western longitude or southern latitude ("-8.59") is a number here, not an unknown option.
+    override val treatUnknownOptionsAsArgs: Boolean = true
+
     private val lat by argument("LAT").double().restrictTo(-90.0..90.0)
     private val lon by argument("LON").double().restrictTo(-180.0..180.0)
     private val alt by argument("ALT", help = "metres above home").double().restrictTo(0.0..10_000.0)
@@ -111,7 +114,7 @@ internal class ResumeCommand(out: Output) : ActionCommand(out, "resume", "Contin
 
 internal class StartCommand(out: Output) : ActionCommand(out, "start", "Start the uploaded mission (arm first).") {
     private val from by option("--from", help = "first item").int().restrictTo(0..65535)
-    override suspend fun perform(vehicle: MavlinkVehicle) = vehicle.action.startMission(from ?: 0).let { "mission started" }
+    override suspend fun perform(vehicle: MavlinkVehicle) = vehicle.action.startMission(from).let { "mission started" }
 }
 
 /** Every action command, in the order `pod --help` lists them. */

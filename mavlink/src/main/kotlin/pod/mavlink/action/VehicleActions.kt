@@ -98,7 +98,12 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
             }
             else -> {
                 setMode(role(ModeRole.GUIDED))
-                command(VehicleCommand(MAV_CMD_NAV_TAKEOFF, param7 = altitude.meters.toFloat()))
+                try {
+                    command(VehicleCommand(MAV_CMD_NAV_TAKEOFF, param7 = altitude.meters.toFloat()))
+                } catch (e: CommandRejected) {
+                    // A resend after a lost ack is refused by a copter already climbing: that is success.
+                    if (e.attempts == 1 || !leavingGround()) throw e
+                }
             }
         }
         val tolerance = maxOf(1.0, altitude.meters * 0.05)
@@ -165,9 +170,15 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
             command(VehicleCommand(MAV_CMD_DO_PAUSE_CONTINUE, param1 = 0f))
             pausedByCommand = true
         } catch (e: CommandRejected) {
-            if (e.result != CommandResult.UNSUPPORTED) throw e
-            hold()
-            pausedByCommand = false
+            when {
+                e.result == CommandResult.UNSUPPORTED -> {
+                    hold()
+                    pausedByCommand = false
+                }
+                // ArduCopter fails a pause when already paused: after a lost ack, the first send did it.
+                e.result == CommandResult.FAILED && e.attempts > 1 -> pausedByCommand = true
+                else -> throw e
+            }
         }
     }
 
@@ -184,12 +195,16 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
     }
 
     /**
-     * Starts the uploaded mission at item [first] (MISSION_START) and waits for the mission mode.
-     * The vehicle must be armed; an ArduPilot copter's mission must begin with a takeoff.
+     * Starts the uploaded mission (MISSION_START) at item [first], or where it stands when null,
+     * and waits for the mission mode. The vehicle must be armed (PX4 arms itself); an ArduPilot
+     * copter's mission must begin with a takeoff. ArduPilot refuses a start item in the command
+     * itself, so there the current item is set first.
      */
-    public suspend fun startMission(first: Int = 0) {
-        require(first >= 0) { "first must be ≥ 0, was $first" }
-        command(VehicleCommand(MAV_CMD_MISSION_START, param1 = first.toFloat(), param2 = 0f))
+    public suspend fun startMission(first: Int? = null) {
+        require(first == null || first >= 0) { "first must be ≥ 0, was $first" }
+        val px4 = airframe().first == Autopilot.PX4
+        if (first != null && !px4) vehicle.mission.setCurrent(first)
+        command(VehicleCommand(MAV_CMD_MISSION_START, param1 = if (px4 && first != null) first.toFloat() else 0f))
         confirmMode("start mission", ModeRole.MISSION)
     }
 
@@ -246,6 +261,13 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
         return FlightModes.forRole(autopilot, type, role)
             ?: throw ActionUnsupported(role.name.lowercase(), "$autopilot ${type.name.lowercase()} has no mode for it")
     }
+
+    /** Whether the vehicle shows, within a few telemetry reports, that it has left the ground. */
+    private suspend fun leavingGround(): Boolean = withTimeoutOrNull(3.seconds) {
+        combine(vehicle.telemetry.landedState, vehicle.telemetry.position) { landed, position ->
+            landed == LandedState.TAKEOFF || landed == LandedState.IN_AIR || (position?.relativeAltitude?.meters ?: 0.0) > 0.5
+        }.first { it }
+    } ?: false
 
     private fun homeAltitude(): Double? =
         vehicle.telemetry.home.value?.altitude?.meters

@@ -12,6 +12,10 @@ public sealed class CommandException(message: String) : Exception(message) {
  * The vehicle answered [command] with [result] (DENIED, UNSUPPORTED, FAILED, CANCELLED, or
  * TEMPORARILY_REJECTED for longer than the retry budget). [statusTexts] are the STATUSTEXT lines
  * the vehicle sent while the command was pending: ArduPilot explains a refused arm there.
+ *
+ * When [attempts] is more than 1 the refusal may answer a resend of a command whose first send
+ * was carried out and whose acknowledgement was lost: ArduCopter refuses a second takeoff because
+ * it is already flying. Check the vehicle's state before concluding it did nothing.
  */
 public class CommandRejected(
     override val command: VehicleCommand,
@@ -21,6 +25,8 @@ public class CommandRejected(
     public val resultCode: Int,
     /** The vehicle's explanation, if it sent one. */
     public val statusTexts: List<String> = emptyList(),
+    /** How many times the command had been sent when the refusal came. */
+    public val attempts: Int = 1,
 ) : CommandException(
     "${command.label} was ${result?.name ?: "answered with MAV_RESULT $resultCode"}" +
         (if (statusTexts.isEmpty()) "" else ": " + statusTexts.joinToString("; ")),

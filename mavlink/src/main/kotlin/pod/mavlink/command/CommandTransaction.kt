@@ -128,7 +128,7 @@ internal class CommandTransaction(
     /** The failure [outcome] stands for, as the exception callers see. */
     fun error(outcome: Outcome, statusTexts: List<String>): CommandException? = when (outcome) {
         is Outcome.Accepted -> null
-        is Outcome.Rejected -> CommandRejected(command, outcome.reply.result, outcome.reply.resultCode, statusTexts)
+        is Outcome.Rejected -> CommandRejected(command, outcome.reply.result, outcome.reply.resultCode, statusTexts, attempts)
         is Outcome.TimedOut -> CommandTimeout(command, outcome.attempts, outcome.waitedNanos.nanoseconds, outcome.waitingFor)
     }
 }

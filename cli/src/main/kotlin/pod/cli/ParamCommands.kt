@@ -1,0 +1,47 @@
+package pod.cli
+
+import com.github.ajalt.clikt.core.CliktCommand
+import com.github.ajalt.clikt.core.Context
+import com.github.ajalt.clikt.core.subcommands
+import com.github.ajalt.clikt.parameters.arguments.argument
+import com.github.ajalt.clikt.parameters.types.double
+import pod.mavlink.MavlinkVehicle
+import pod.mavlink.param.Parameter
+
+/** `pod param`: read and write a vehicle's parameters. */
+internal class ParamGroup(out: Output) : CliktCommand(name = "param") {
+    init {
+        subcommands(ParamGet(out), ParamSet(out))
+    }
+
+    override fun help(context: Context): String = "Read or write a vehicle's parameters (PARAM_VALUE confirms each)."
+
+    override fun run() = Unit
+}
+
+private fun Parameter.text() = "$name = ${if (type.isInteger) value.toLong().toString() else value.toString()} (${type.name})"
+
+/** `pod param get NAME`. */
+internal class ParamGet(out: Output) : VehicleCommandBase(out, "get") {
+    private val name by argument(help = "parameter name, e.g. WPNAV_SPEED")
+
+    override fun help(context: Context): String = "Read one parameter."
+
+    override suspend fun act(vehicle: MavlinkVehicle) {
+        val p = vehicle.params.read(name)
+        finish(p.text(), "action" to "param-get", "sysid" to vehicle.systemId, "name" to p.name, "value" to p.value, "type" to p.type.name)
+    }
+}
+
+/** `pod param set NAME VALUE`. */
+internal class ParamSet(out: Output) : VehicleCommandBase(out, "set") {
+    private val name by argument(help = "parameter name")
+    private val value by argument(help = "new value").double()
+
+    override fun help(context: Context): String = "Write one parameter and print it as the vehicle then reports it."
+
+    override suspend fun act(vehicle: MavlinkVehicle) {
+        val p = vehicle.params.write(name, value)
+        finish(p.text(), "action" to "param-set", "sysid" to vehicle.systemId, "name" to p.name, "value" to p.value, "type" to p.type.name)
+    }
+}
