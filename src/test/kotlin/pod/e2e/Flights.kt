@@ -22,6 +22,7 @@ internal object Flights {
     const val NAV_LAND = 21
     const val NAV_TAKEOFF = 22
     const val DO_LAND_START = 189
+    const val DO_DIGICAM_CONTROL = 203
 
     /** Altitudes above home. */
     private const val FRAME_RELATIVE = 3

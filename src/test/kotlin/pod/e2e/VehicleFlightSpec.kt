@@ -79,6 +79,40 @@ class VehicleFlightSpec : StringSpec({
         }
     }
 
+    "camera items in a mission are photographed where the vehicle is when it reaches them" {
+        coroutineScope {
+            val gcs = GroundStation.open("udpin://127.0.0.1:0", this)
+            val sim = SimVehicle(SimVehicleConfig(systemId = 34, autopilot = Autopilot.PX4, timeScale = 20.0, gcs = "udpout://127.0.0.1:${gcs.link.localPort}"))
+            try {
+                sim.start(this)
+                val vehicle = Flights.vehicle(gcs, 34)
+                val home = SimVehicleConfig.DEFAULT_HOME
+                val a = home.offset(30.m, 0.m)
+                val b = home.offset(30.m, 30.m)
+                val shoot = { seq: Int -> Flights.item(seq, Flights.DO_DIGICAM_CONTROL).copy(frame = 2, x = 1) }
+                vehicle.mission.upload(
+                    listOf(
+                        Flights.item(0, Flights.NAV_TAKEOFF, altitude = 15.0),
+                        Flights.item(1, Flights.NAV_WAYPOINT, a, 15.0), shoot(2),
+                        Flights.item(3, Flights.NAV_WAYPOINT, b, 15.0), shoot(4),
+                        Flights.item(5, Flights.NAV_RETURN_TO_LAUNCH),
+                    ),
+                )
+                Flights.keepArmedOnGround(vehicle)
+                vehicle.action.arm()
+                vehicle.action.startMission()
+                vehicle.action.awaitLanded(timeout = 60.seconds)
+                val photos = sim.photos.value
+                photos.map { it.missionSeq } shouldBe listOf(2, 4)
+                photos[0].location.distanceTo(a).meters shouldBeLessThan 11.0 // PX4's NAV_ACC_RAD is 10 m
+                photos[1].location.distanceTo(b).meters shouldBeLessThan 11.0
+            } finally {
+                sim.stop()
+                gcs.close()
+            }
+        }
+    }
+
     for (autopilot in listOf(Autopilot.ARDUPILOT, Autopilot.PX4)) {
         "a ${autopilot.name} copter paused mid-mission holds position and altitude, and continues at the same item" {
             coroutineScope {

@@ -17,11 +17,13 @@ internal class Camera {
     private var distance: Double? = null
     private var lastAt: Location? = null
     private var pendingShot = false
+    private var pendingSeq: Int? = null // the mission item that asked for the pending shot
     private var taken = 0
 
-    /** Take one photo on the next step. */
-    fun shoot() {
+    /** Take one photo on the next step, credited to mission item [seq] when a mission item asked. */
+    fun shoot(seq: Int? = null) {
         pendingShot = true
+        pendingSeq = seq
     }
 
     /** Photos every [seconds], [count] of them (0 = until stopped), the first now. */
@@ -53,12 +55,13 @@ internal class Camera {
     /** The photos due at [now] seconds with the vehicle at [location]. */
     fun step(now: Double, location: Location, missionSeq: Int?): List<PhotoEvent> {
         val photos = ArrayList<PhotoEvent>(1)
-        fun take() {
-            photos += PhotoEvent(taken++, now.seconds, location, missionSeq)
+        fun take(seq: Int? = missionSeq) {
+            photos += PhotoEvent(taken++, now.seconds, location, seq)
         }
         if (pendingShot) {
             pendingShot = false
-            take()
+            take(pendingSeq ?: missionSeq)
+            pendingSeq = null
         }
         interval?.let { every ->
             if (now >= nextAt) {

@@ -252,10 +252,10 @@ internal class MissionRunner(private val ap: SimAutopilot) {
             DO_SET_HOME -> ap.setHome(if (it.param1 == 1f || (it.x == 0 && it.y == 0)) ap.body.location else location(it))
             IMAGE_START_CAPTURE -> ap.camera.startInterval(it.param2.toDouble(), it.param3.toInt(), ap.time)
             IMAGE_STOP_CAPTURE -> ap.camera.stop()
-            DO_DIGICAM_CONTROL -> if (it.x == 1) ap.camera.shoot()
+            DO_DIGICAM_CONTROL -> if (it.x == 1) ap.camera.shoot(seq)
             DO_SET_CAM_TRIGG_DIST -> {
                 ap.camera.startDistance(it.param1.toDouble())
-                if (it.param3 == 1f) ap.camera.shoot()
+                if (it.param3 == 1f) ap.camera.shoot(seq)
             }
             else -> Unit // DO_LAND_START is a marker; CONDITION_YAW and the rest change nothing simulated
         }
