@@ -67,32 +67,34 @@ class VehicleControlSpec : StringSpec({
         }
     }
 
-    "through a relay losing 30 % each way, arm, takeoff, goto and land still succeed" {
-        coroutineScope {
-            val station = GroundStationConfig(lostAfter = 10.seconds)
-            val gcs = GroundStation.open("udpin://127.0.0.1:0", this, station)
-            val faults = LinkFaults(drop = 0.3, delay = 2.milliseconds)
-            val relay = LossyRelay("udpin://127.0.0.1:0", "udpout://127.0.0.1:${gcs.link.localPort}", faults, faults, seed = 11)
-            relay.start(this)
-            val sim = SimVehicle(SimVehicleConfig(systemId = 42, timeScale = 10.0, gcs = "udpout://127.0.0.1:${relay.portA}"))
-            try {
-                sim.start(this)
-                val v = Flights.vehicle(gcs, 42)
-                val home = v.telemetry.position.value!!.location
-                Flights.keepArmedOnGround(v)
-                v.action.arm()
-                v.action.takeoff(10.m)
-                val target = home.offset(north = 25.m, east = 0.m, up = 10.m)
-                v.action.goto(target)
-                v.action.awaitArrival(target, within = 2.m, timeout = 60.seconds)
-                v.action.land()
-                v.action.awaitLanded(timeout = 60.seconds)
-                relay.counters.value.aToB.dropped shouldBeGreaterThan 10
-                relay.counters.value.bToA.dropped shouldBeGreaterThan 10
-            } finally {
-                sim.stop()
-                relay.close()
-                gcs.close()
+    for (autopilot in listOf(Autopilot.ARDUPILOT, Autopilot.PX4)) {
+        "through a relay losing 30 % each way, a ${autopilot.name} copter still arms, takes off, goes to a point and lands" {
+            coroutineScope {
+                val station = GroundStationConfig(lostAfter = 10.seconds)
+                val gcs = GroundStation.open("udpin://127.0.0.1:0", this, station)
+                val faults = LinkFaults(drop = 0.3, delay = 2.milliseconds)
+                val relay = LossyRelay("udpin://127.0.0.1:0", "udpout://127.0.0.1:${gcs.link.localPort}", faults, faults, seed = 11)
+                relay.start(this)
+                val sim = SimVehicle(SimVehicleConfig(systemId = 42, autopilot = autopilot, timeScale = 10.0, gcs = "udpout://127.0.0.1:${relay.portA}"))
+                try {
+                    sim.start(this)
+                    val v = Flights.vehicle(gcs, 42)
+                    val home = v.telemetry.position.value!!.location
+                    Flights.keepArmedOnGround(v)
+                    v.action.arm()
+                    v.action.takeoff(10.m)
+                    val target = home.offset(north = 25.m, east = 0.m, up = 10.m)
+                    v.action.goto(target)
+                    v.action.awaitArrival(target, within = 2.m, timeout = 60.seconds)
+                    v.action.land()
+                    v.action.awaitLanded(timeout = 60.seconds)
+                    relay.counters.value.aToB.dropped shouldBeGreaterThan 10
+                    relay.counters.value.bToA.dropped shouldBeGreaterThan 10
+                } finally {
+                    sim.stop()
+                    relay.close()
+                    gcs.close()
+                }
             }
         }
     }
