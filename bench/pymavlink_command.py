@@ -19,9 +19,9 @@ confirmation + 1, and after --give-up-s without an answer the command counts as 
 from the first send of a vehicle's command to the arrival of its ack; makespan: from the round's
 start to the last ack. Rounds are --gap-ms apart (datagrams arriving then are read and dropped).
 
-stdout, one JSON object a line: {"event": "ready", "port": P}, {"event": "discovered", ...}, one
-{"event": "round", ...} per measured round (latencies as a comma-separated string, so that the
-object stays flat), {"event": "summary", ...} and {"event": "done"}; {"event": "error", ...} on
+stdout, one JSON object a line: {"event": "ready", "port": P}, {"event": "discovered", ...},
+{"event": "measuring"} after the warm-up rounds, one {"event": "round", ...} per measured round (latencies as a comma-separated string, so that the
+object stays flat), {"event": "summary", ...} (with the CPU time of the measured rounds) and {"event": "done"}; {"event": "error", ...} on
 failure. Every wait is bounded.
 """
 
@@ -207,7 +207,11 @@ def main():
     emit(event="discovered", count=len(station.addresses), seconds=round(seconds, 3))
 
     all_latencies, makespans, failures, sends = [], [], 0, 0
+    cpu = 0.0
     for r in range(args.warmup + args.rounds):
+        if r == args.warmup:
+            emit(event="measuring")
+            cpu = time.process_time()
         latencies, makespan, failed, sent = station.round(args.resend_ms / 1000, args.give_up_s)
         if r >= args.warmup:
             emit(event="round", round=r - args.warmup, makespan_us=round(makespan, 1), failures=failed, sends=sent,
@@ -217,7 +221,8 @@ def main():
             failures += failed
             sends += sent
         station.idle(args.gap_ms / 1000)
-    emit(event="summary", commands=args.rounds * args.count, acknowledged=len(all_latencies), failures=failures,
+    cpu = time.process_time() - cpu
+    emit(event="summary", cpu_seconds=round(cpu, 6), commands=args.rounds * args.count, acknowledged=len(all_latencies), failures=failures,
          resends=sends - args.rounds * args.count,
          median_ms=percentile(all_latencies, 50) / 1000, p90_ms=percentile(all_latencies, 90) / 1000,
          p99_ms=percentile(all_latencies, 99) / 1000, max_ms=max(all_latencies, default=float("nan")) / 1000,

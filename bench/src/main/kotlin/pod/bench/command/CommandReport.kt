@@ -17,19 +17,20 @@ object CommandReport {
                 "from the caller's send to its return (Pod) or from the first send to the ack's arrival (pymavlink, resend after ${o.pythonResend}):",
         )
         appendLine()
-        appendLine("| vehicles | loss each way | ground station | rounds | median ms | p90 ms | p99 ms | max ms | round makespan median ms | commands/s | resends | failed |")
-        appendLine("|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+        appendLine("| vehicles | loss each way | ground station | rounds | median ms | p90 ms | p99 ms | max ms | round makespan median ms | commands/s | resends | failed | CPU µs/command: station / fleet |")
+        appendLine("|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
         for (run in r.runs) {
             val c = run.case
             if (run.setupError != null) {
-                appendLine("| ${c.vehicles} | ${c.lossPercent} % | ${run.station.label} | ✗ | ${run.setupError} | | | | | | | |")
+                appendLine("| ${c.vehicles} | ${c.lossPercent} % | ${run.station.label} | ✗ | ${run.setupError} | | | | | | | | |")
                 continue
             }
             appendLine(
                 fmt(
-                    "| %d | %d %% | %s | %d | %.3f | %.3f | %.3f | %.3f | %.3f | %,.0f | %d | %d of %d |",
+                    "| %d | %d %% | %s | %d | %.3f | %.3f | %.3f | %.3f | %.3f | %,.0f | %d | %d of %d | %.0f / %.0f |",
                     c.vehicles, c.lossPercent, run.station.label, run.rounds.size, run.latencyMs(50.0), run.latencyMs(90.0),
                     run.latencyMs(99.0), run.maxMs, run.medianMakespanMs, run.commandsPerSecond, run.resends, run.failures, run.commands,
+                    run.gcsCpuUsPerCommand, run.fleetCpuUsPerCommand,
                 ),
             )
         }
@@ -86,6 +87,7 @@ object CommandReport {
                     "\"makespanMedianMs\": ${num(run.medianMakespanMs)}, \"commandsPerSecond\": ${num(run.commandsPerSecond)}, " +
                     "\"makespansMs\": [${run.rounds.joinToString { num(it.makespanUs / 1e3) }}], " +
                     "\"podSplitMs\": ${if (s == null) "null" else "{\"samples\": ${s.samples}, \"callerToLink\": ${num(s.toSocketUs / 1e3)}, \"linkSend\": ${num(s.socketSendUs / 1e3)}, \"wire\": ${num(s.wireUs / 1e3)}, \"ackToCaller\": ${num(s.toCallerUs / 1e3)}}"}, " +
+                    "\"gcsCpuSeconds\": ${run.gcsCpuSeconds?.let(::num) ?: "null"}, \"fleetCpuSeconds\": ${run.fleetCpuSeconds?.let(::num) ?: "null"}, " +
                     "\"errors\": [${run.errors.joinToString { str(it) }}], \"droppedToGcs\": ${run.droppedToGcs}, \"droppedToVehicle\": ${run.droppedToVehicle}}"
             },
         )
@@ -97,9 +99,9 @@ object CommandReport {
             fmt("%-9s %-28s SETUP FAILED: %s", run.station.label, run.case.label, run.setupError)
         } else {
             fmt(
-                "%-9s %-28s median %.3f  p90 %.3f  p99 %.3f  max %.3f ms  makespan %.3f ms  %,.0f cmd/s  resends %d  failed %d/%d",
+                "%-9s %-28s median %.3f  p90 %.3f  p99 %.3f  max %.3f ms  makespan %.3f ms  %,.0f cmd/s  resends %d  failed %d/%d  CPU µs/cmd %.0f / %.0f",
                 run.station.label, run.case.label, run.latencyMs(50.0), run.latencyMs(90.0), run.latencyMs(99.0), run.maxMs,
-                run.medianMakespanMs, run.commandsPerSecond, run.resends, run.failures, run.commands,
+                run.medianMakespanMs, run.commandsPerSecond, run.resends, run.failures, run.commands, run.gcsCpuUsPerCommand, run.fleetCpuUsPerCommand,
             ) + (run.split?.let { fmt("  [split: %.3f / %.3f / %.3f / %.3f ms]", it.toSocketUs / 1e3, it.socketSendUs / 1e3, it.wireUs / 1e3, it.toCallerUs / 1e3) } ?: "") +
                 run.errors.take(3).joinToString("") { "\n      failed: $it" }
         }

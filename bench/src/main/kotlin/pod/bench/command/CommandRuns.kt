@@ -45,6 +45,12 @@ data class CommandRun(
     /** Datagrams the relays dropped vehicle → ground station and back, over the whole run. */
     val droppedToGcs: Long = 0,
     val droppedToVehicle: Long = 0,
+    /**
+     * CPU seconds over the measured rounds (gaps included): the ground station's process (Pod: the
+     * harness's JVM; pymavlink: its own process_time) and the simulated fleet's JVM.
+     */
+    val gcsCpuSeconds: Double? = null,
+    val fleetCpuSeconds: Double? = null,
 ) {
     val latencies: List<Double> get() = rounds.flatMap { it.latenciesUs }
     val commands: Int get() = rounds.size * case.vehicles
@@ -52,6 +58,10 @@ data class CommandRun(
     val failures: Int get() = rounds.sumOf { it.failures }
     val resends: Int get() = rounds.sumOf { it.sends } - commands
     val errors: List<String> get() = rounds.flatMap { it.errors }
+
+    /** CPU µs per command of the ground station and of the fleet, over the measured rounds. */
+    val gcsCpuUsPerCommand: Double get() = (gcsCpuSeconds ?: Double.NaN) * 1e6 / commands
+    val fleetCpuUsPerCommand: Double get() = (fleetCpuSeconds ?: Double.NaN) * 1e6 / commands
 
     fun latencyMs(p: Double): Double = percentile(latencies, p) / 1000
     val maxMs: Double get() = (latencies.maxOrNull() ?: Double.NaN) / 1000

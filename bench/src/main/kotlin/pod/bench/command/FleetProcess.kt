@@ -21,6 +21,9 @@ class FleetProcess private constructor(private val peer: PeerProcess) : AutoClos
     /** Stops the running fleet; returns the server's counters (relay drops), empty when it did not answer. */
     suspend fun stop(): Map<String, String> = command("stop", "stopped")?.takeIf { it["event"] == "stopped" } ?: emptyMap()
 
+    /** CPU seconds the fleet's JVM has used so far, or null when it did not answer. */
+    suspend fun cpuSeconds(): Double? = command("cpu", "cpu")?.get("seconds")?.toDoubleOrNull()
+
     private suspend fun command(line: String, answer: String): Map<String, String>? = runInterruptible(Dispatchers.IO) {
         peer.stdin.write("$line\n".toByteArray())
         peer.stdin.flush()

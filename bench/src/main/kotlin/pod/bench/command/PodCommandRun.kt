@@ -97,12 +97,20 @@ suspend fun podRun(case: CommandCase, fleet: FleetProcess, o: CommandBenchOption
         val vehicles = all.values.sortedBy { it.systemId }
         val split = ArrayList<DoubleArray>()
         val rounds = ArrayList<CommandRound>()
+        var gcsCpu = 0.0
+        var fleetCpu: Double? = null
         repeat(case.warmUp + case.rounds) { r ->
+            if (r == case.warmUp) {
+                gcsCpu = processCpuSeconds()
+                fleetCpu = fleet.cpuSeconds()
+            }
             val measured = r >= case.warmUp
             val round = podRound(vehicles, tap, ROUND_LIMIT, if (measured) split else null)
             if (measured) rounds += round
             delay(o.gap)
         }
+        gcsCpu = processCpuSeconds() - gcsCpu
+        fleetCpu = fleet.cpuSeconds()?.let { end -> fleetCpu?.let { end - it } }
         gcs.close()
         stopped = fleet.stop()
         CommandRun(
@@ -112,6 +120,7 @@ suspend fun podRun(case: CommandCase, fleet: FleetProcess, o: CommandBenchOption
                 percentile(split.map { it[2] }, 50.0), percentile(split.map { it[3] }, 50.0),
             ),
             droppedToGcs = stopped["droppedToGcs"]?.toLongOrNull() ?: 0, droppedToVehicle = stopped["droppedToVehicle"]?.toLongOrNull() ?: 0,
+            gcsCpuSeconds = gcsCpu, fleetCpuSeconds = fleetCpu,
         )
     } finally {
         gcs.close()

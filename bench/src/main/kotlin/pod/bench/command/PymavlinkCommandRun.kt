@@ -37,13 +37,21 @@ suspend fun pymavlinkRun(case: CommandCase, fleet: FleetProcess, o: CommandBench
         val limit = o.discovery + (PYTHON_GIVE_UP + o.gap) * (case.warmUp + case.rounds) + 30.seconds
         val discovered = runInterruptible(Dispatchers.IO) { peer.await("discovered", o.discovery + 10.seconds) }
         if (discovered?.get("event") != "discovered") return failed("vehicles not discovered: ${discovered ?: "nothing"}")
-        val done = runInterruptible(Dispatchers.IO) { peer.await("done", limit) }
+        var summary: Map<String, String>? = null
+        val measuring = runInterruptible(Dispatchers.IO) { peer.await("measuring", limit) }
+        if (measuring?.get("event") != "measuring") return failed("peer did not finish warming up: ${measuring ?: "nothing within $limit"}")
+        val fleetCpuBefore = fleet.cpuSeconds()
+        val done = runInterruptible(Dispatchers.IO) {
+            peer.await("summary", limit)?.also { summary = it }?.takeIf { it["event"] != "summary" } ?: peer.await("done", 10.seconds)
+        }
         if (done?.get("event") != "done") return failed("peer did not finish: ${done ?: "nothing within $limit"}")
+        val fleetCpu = fleet.cpuSeconds()?.let { end -> fleetCpuBefore?.let { end - it } }
         val counters = fleet.stop()
         started = false
         return CommandRun(
             CommandStation.PYMAVLINK, case, rounds, discovered["seconds"]?.toDoubleOrNull(),
             droppedToGcs = counters["droppedToGcs"]?.toLongOrNull() ?: 0, droppedToVehicle = counters["droppedToVehicle"]?.toLongOrNull() ?: 0,
+            gcsCpuSeconds = summary?.get("cpu_seconds")?.toDoubleOrNull(), fleetCpuSeconds = fleetCpu,
         )
     } finally {
         peer.close()

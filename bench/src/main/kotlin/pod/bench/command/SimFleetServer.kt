@@ -31,6 +31,7 @@ import kotlin.time.Duration.Companion.seconds
  *   commands from an in-process ground station), then prints `{"event": "ready"}`;
  * - `start N LOSS_PERCENT SEED PORT`: N vehicles (system ids 1..N) sending to loopback PORT,
  *   each behind its own seeded relay when LOSS_PERCENT > 0; prints `{"event": "started"}`;
+ * - `cpu`: prints `{"event": "cpu", "seconds": …}`, the CPU time this process has used so far;
  * - `stop`: stops them; prints `{"event": "stopped", "droppedToGcs": …, "droppedToVehicle": …}`;
  * - end of stdin, or `--limit` (default 2 h) after start: exits.
  *
@@ -66,6 +67,7 @@ fun main(args: Array<String>) {
                         f?.stop()
                         emit("{\"event\": \"stopped\", \"droppedToGcs\": ${f?.droppedToGcs ?: 0}, \"droppedToVehicle\": ${f?.droppedToVehicle ?: 0}}")
                     }
+                    "cpu" -> emit("{\"event\": \"cpu\", \"seconds\": ${String.format(Locale.ROOT, "%.6f", processCpuSeconds())}}")
                     "" -> {}
                     else -> error("unknown command '${words[0]}'")
                 }
@@ -78,6 +80,10 @@ fun main(args: Array<String>) {
     }
     exitProcess(0)
 }
+
+/** CPU time this JVM has used so far, all threads (JIT and GC included). */
+fun processCpuSeconds(): Double =
+    (java.lang.management.ManagementFactory.getOperatingSystemMXBean() as com.sun.management.OperatingSystemMXBean).processCpuTime / 1e9
 
 private fun emit(json: String) {
     println(json)
