@@ -54,7 +54,14 @@ object CommandReport {
         val lossy = r.runs.filter { it.case.lossPercent > 0 && it.setupError == null }
         if (lossy.isNotEmpty()) {
             appendLine()
-            for (run in lossy) appendLine("- ${run.station.label}, ${run.case.label}: relays dropped ${run.droppedToGcs} datagrams to the ground station, ${run.droppedToVehicle} to the vehicles")
+            for (run in lossy) {
+                appendLine(
+                    fmt(
+                        "- %s, %s: mean latency %.1f ms, p75 %.1f ms; relays dropped %d datagrams to the ground station, %d to the vehicles",
+                        run.station.label, run.case.label, run.latencies.average() / 1e3, run.latencyMs(75.0), run.droppedToGcs, run.droppedToVehicle,
+                    ),
+                )
+            }
         }
         val failed = r.runs.filter { it.errors.isNotEmpty() }
         if (failed.isNotEmpty()) {
@@ -86,6 +93,7 @@ object CommandReport {
                     "\"latencyMs\": {\"median\": ${num(run.latencyMs(50.0))}, \"p90\": ${num(run.latencyMs(90.0))}, \"p99\": ${num(run.latencyMs(99.0))}, \"max\": ${num(run.maxMs)}}, " +
                     "\"makespanMedianMs\": ${num(run.medianMakespanMs)}, \"commandsPerSecond\": ${num(run.commandsPerSecond)}, " +
                     "\"makespansMs\": [${run.rounds.joinToString { num(it.makespanUs / 1e3) }}], " +
+                    "\"latenciesMs\": [${run.latencies.joinToString { num(it / 1e3) }}], " +
                     "\"podSplitMs\": ${if (s == null) "null" else "{\"samples\": ${s.samples}, \"callerToLink\": ${num(s.toSocketUs / 1e3)}, \"linkSend\": ${num(s.socketSendUs / 1e3)}, \"wire\": ${num(s.wireUs / 1e3)}, \"ackToCaller\": ${num(s.toCallerUs / 1e3)}}"}, " +
                     "\"gcsCpuSeconds\": ${run.gcsCpuSeconds?.let(::num) ?: "null"}, \"fleetCpuSeconds\": ${run.fleetCpuSeconds?.let(::num) ?: "null"}, " +
                     "\"errors\": [${run.errors.joinToString { str(it) }}], \"droppedToGcs\": ${run.droppedToGcs}, \"droppedToVehicle\": ${run.droppedToVehicle}}"
