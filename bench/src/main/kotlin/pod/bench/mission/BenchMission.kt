@@ -1,8 +1,21 @@
 package pod.bench.mission
 
+import kotlinx.coroutines.CoroutineScope
+import pod.bench.RelayedVehicle
 import pod.core.vehicle.Autopilot
 import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionType
+import pod.sim.SimVehicleConfig
+
+/** The simulated vehicle's system id in every run. */
+const val VEHICLE_SYSTEM_ID = 21
+
+/**
+ * A fresh simulated vehicle of [cell]'s flavour behind a fresh relay that drops [Cell.loss] of the
+ * datagrams each way, seeded with [seed], sending to a ground station on loopback port [gcsPort].
+ */
+suspend fun startCellVehicle(scope: CoroutineScope, cell: Cell, seed: Long, gcsPort: Int): RelayedVehicle =
+    RelayedVehicle.start(scope, SimVehicleConfig(systemId = VEHICLE_SYSTEM_ID, autopilot = cell.flavour), cell.loss, seed, gcsPort)
 
 /**
  * [count] NAV_WAYPOINTs (16) in MAV_FRAME_GLOBAL_RELATIVE_ALT_INT (6), in a line going north of

@@ -5,6 +5,7 @@ import kotlinx.coroutines.cancelChildren
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.runInterruptible
 import pod.bench.Fixtures
+import pod.bench.percentile
 import pod.sim.fault.LossyRelay
 import java.net.DatagramPacket
 import java.net.DatagramSocket
@@ -94,12 +95,4 @@ private fun pingPong(path: String, port: Int, warmUp: Int, samples: Int): Floor 
         }
     }
     return Floor(path, rtts, lost)
-}
-
-/** Nearest-rank percentile of [values] (NaN when empty). */
-fun percentile(values: List<Double>, p: Double): Double {
-    if (values.isEmpty()) return Double.NaN
-    val sorted = values.sorted()
-    val rank = kotlin.math.ceil(p / 100.0 * sorted.size).toInt().coerceIn(1, sorted.size)
-    return sorted[rank - 1]
 }

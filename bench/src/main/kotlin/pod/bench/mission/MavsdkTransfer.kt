@@ -4,6 +4,8 @@ import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.cancelChildren
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.runInterruptible
+import pod.bench.RelayedVehicle
+import pod.bench.freeUdpPort
 import pod.mavlink.mission.MissionItem
 import java.io.File
 import kotlin.time.Duration.Companion.seconds
@@ -27,7 +29,7 @@ suspend fun mavsdkTransfer(setup: MavsdkSetup, cell: Cell, seed: Long, items: Li
     try {
         val ready = await("ready", limits.discovery + GRACE)
         if (ready?.get("event") != "ready") return@coroutineScope failed("MAVSDK peer did not start: ${ready ?: "nothing within ${limits.discovery + GRACE}"}")
-        rig = RelayedVehicle.start(this, cell, seed, port)
+        rig = startCellVehicle(this, cell, seed, port)
         val system = await("system", limits.discovery + GRACE)
         if (system?.get("event") != "system" || system["sysid"] == null) return@coroutineScope failed("vehicle not discovered: ${system ?: "nothing within ${limits.discovery + GRACE}"}")
 

@@ -1,5 +1,8 @@
 package pod.bench.mission
 
+import pod.bench.JsonText.num
+import pod.bench.JsonText.str
+import pod.bench.percentile
 import java.util.Locale
 import kotlin.time.Duration
 
@@ -107,19 +110,6 @@ object MissionReport {
 
     private fun stepJson(s: Step?): String =
         if (s == null) "null" else "{\"ok\": ${s.ok}, \"seconds\": ${num(s.seconds)}, \"error\": ${s.error?.let(::str) ?: "null"}}"
-
-    private fun num(v: Double): String = if (v.isFinite()) fmt("%.4f", v) else "null"
-
-    private fun str(s: String): String = buildString {
-        append('"')
-        for (c in s) when {
-            c == '"' -> append("\\\"")
-            c == '\\' -> append("\\\\")
-            c < ' ' -> append(fmt("\\u%04x", c.code))
-            else -> append(c)
-        }
-        append('"')
-    }
 
     private fun fmt(format: String, vararg args: Any?): String = String.format(Locale.ROOT, format, *args)
 }

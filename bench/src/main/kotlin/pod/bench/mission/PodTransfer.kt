@@ -6,6 +6,7 @@ import kotlinx.coroutines.cancelChildren
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.withTimeout
+import pod.bench.RelayedVehicle
 import pod.mavlink.GroundStation
 import pod.mavlink.GroundStationConfig
 import pod.mavlink.mission.MissionItem
@@ -25,7 +26,7 @@ suspend fun podTransfer(cell: Cell, seed: Long, items: List<MissionItem>, limits
     val gcs = GroundStation.open("udpin://127.0.0.1:0", this, GroundStationConfig(lostAfter = 30.seconds))
     var rig: RelayedVehicle? = null
     try {
-        rig = RelayedVehicle.start(this, cell, seed, gcs.link.localPort)
+        rig = startCellVehicle(this, cell, seed, gcs.link.localPort)
         val vehicle = try {
             withTimeout(limits.discovery) { gcs.vehicles.first { VEHICLE_SYSTEM_ID in it } }.getValue(VEHICLE_SYSTEM_ID)
         } catch (e: TimeoutCancellationException) {

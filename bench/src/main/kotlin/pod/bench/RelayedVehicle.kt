@@ -1,4 +1,4 @@
-package pod.bench.mission
+package pod.bench
 
 import kotlinx.coroutines.CoroutineScope
 import pod.sim.SimVehicle
@@ -8,13 +8,10 @@ import pod.sim.fault.LossyRelay
 import java.net.DatagramSocket
 import java.net.InetAddress
 
-/** The simulated vehicle's system id in every run. */
-const val VEHICLE_SYSTEM_ID = 21
-
 /**
- * A fresh simulated vehicle of [cell]'s flavour behind a fresh relay that drops [Cell.loss] of the
- * datagrams each way (nothing else), seeded with [seed], sending to a ground station listening on
- * loopback port [gcsPort]. Both live in [scope] until [close].
+ * A fresh simulated vehicle behind its own fresh relay that drops [loss] of the datagrams each
+ * way (nothing else), seeded, sending to a ground station listening on loopback. Both live in the
+ * scope given to [start] until [close]. One relay per vehicle, as each vehicle has its own radio.
  */
 class RelayedVehicle private constructor(val sim: SimVehicle, val relay: LossyRelay) : AutoCloseable {
     /** Datagrams dropped on the way to the ground station. */
@@ -29,11 +26,15 @@ class RelayedVehicle private constructor(val sim: SimVehicle, val relay: LossyRe
     }
 
     companion object {
-        suspend fun start(scope: CoroutineScope, cell: Cell, seed: Long, gcsPort: Int): RelayedVehicle {
-            val faults = LinkFaults(drop = cell.loss)
+        /**
+         * Starts a relay with [loss] (0..1) each way, seeded with [seed], towards loopback port
+         * [gcsPort], and a vehicle of [config] (its `gcs` replaced by the relay's address) behind it.
+         */
+        suspend fun start(scope: CoroutineScope, config: SimVehicleConfig, loss: Double, seed: Long, gcsPort: Int): RelayedVehicle {
+            val faults = LinkFaults(drop = loss)
             val relay = LossyRelay("udpin://127.0.0.1:0", "udpout://127.0.0.1:$gcsPort", faults, faults, seed = seed)
             relay.start(scope)
-            val sim = SimVehicle(SimVehicleConfig(systemId = VEHICLE_SYSTEM_ID, autopilot = cell.flavour, gcs = "udpout://127.0.0.1:${relay.portA}"))
+            val sim = SimVehicle(config.copy(gcs = "udpout://127.0.0.1:${relay.portA}"))
             try {
                 sim.start(scope)
             } catch (e: Throwable) {
