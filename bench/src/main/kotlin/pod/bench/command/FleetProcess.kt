@@ -48,9 +48,6 @@ class FleetProcess private constructor(private val peer: PeerProcess) : AutoClos
             val peer = PeerProcess(
                 listOf(
                     java, "-Xms512m", "-Xmx512m",
-                    // Every simulated vehicle's UDP socket has a Ktor selector that blocks a thread of
-                    // Dispatchers.IO in select(); 100 vehicles need more than its default 64 threads.
-                    "-Dkotlinx.coroutines.io.parallelism=512",
                     "-cp", System.getProperty("java.class.path"), "pod.bench.command.SimFleetServerKt",
                 ),
                 "sim fleet server", log,

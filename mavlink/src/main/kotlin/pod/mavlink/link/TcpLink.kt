@@ -1,6 +1,5 @@
 package pod.mavlink.link
 
-import io.ktor.network.selector.SelectorManager
 import io.ktor.network.sockets.InetSocketAddress
 import io.ktor.network.sockets.Socket
 import io.ktor.network.sockets.aSocket
@@ -9,7 +8,6 @@ import io.ktor.network.sockets.openWriteChannel
 import io.ktor.utils.io.ByteWriteChannel
 import io.ktor.utils.io.readAvailable
 import io.ktor.utils.io.writeFully
-import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
 import java.io.IOException
@@ -18,7 +16,6 @@ import java.net.ConnectException
 /** A TCP client link to one server (SITL's TCP port, a MAVLink router). */
 internal class TcpLink private constructor(
     override val address: LinkAddress,
-    private val selector: SelectorManager,
     private val socket: Socket,
 ) : MavlinkLink {
     private val remote = LinkPeer(socket.remoteAddress)
@@ -64,23 +61,17 @@ internal class TcpLink private constructor(
     override fun close() {
         closed = true
         socket.close()
-        selector.close()
     }
 
     companion object {
         suspend fun open(address: LinkAddress): TcpLink {
             val resolved = java.net.InetSocketAddress(address.host, address.port)
             if (resolved.isUnresolved) throw HostUnreachable(address, "unknown host '${address.host}'")
-            val selector = SelectorManager(Dispatchers.IO)
             try {
-                val socket = aSocket(selector).tcp().connect(address.host, address.port)
-                return TcpLink(address, selector, socket)
+                val socket = aSocket(Selectors.shared).tcp().connect(address.host, address.port)
+                return TcpLink(address, socket)
             } catch (e: ConnectException) {
-                selector.close()
                 throw HostUnreachable(address, e.message ?: "connection refused", e)
-            } catch (e: Throwable) {
-                selector.close()
-                throw e
             }
         }
     }

@@ -1,13 +1,11 @@
 package pod.mavlink.link
 
-import io.ktor.network.selector.SelectorManager
 import io.ktor.network.sockets.BoundDatagramSocket
 import io.ktor.network.sockets.Datagram
 import io.ktor.network.sockets.InetSocketAddress
 import io.ktor.network.sockets.aSocket
 import io.ktor.utils.io.core.buildPacket
 import io.ktor.utils.io.core.writeFully
-import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.channels.ClosedReceiveChannelException
 import kotlinx.coroutines.channels.ClosedSendChannelException
 import kotlinx.io.readByteArray
@@ -22,7 +20,6 @@ import java.util.concurrent.ConcurrentHashMap
  */
 internal class UdpLink private constructor(
     override val address: LinkAddress,
-    private val selector: SelectorManager,
     private val socket: BoundDatagramSocket,
     private val remote: LinkPeer?,
 ) : MavlinkLink {
@@ -61,7 +58,6 @@ internal class UdpLink private constructor(
 
     override fun close() {
         socket.close()
-        selector.close()
     }
 
     companion object {
@@ -69,32 +65,26 @@ internal class UdpLink private constructor(
         const val RECEIVE_BUFFER_BYTES = 4 shl 20
 
         suspend fun open(address: LinkAddress): UdpLink {
-            val selector = SelectorManager(Dispatchers.IO)
-            try {
-                val remote = if (address is LinkAddress.UdpOut) {
-                    val resolved = java.net.InetSocketAddress(address.host, address.port)
-                    if (resolved.isUnresolved) throw HostUnreachable(address, "unknown host '${address.host}'")
-                    LinkPeer(InetSocketAddress(address.host, address.port))
-                } else {
-                    null
-                }
-                val local = if (address is LinkAddress.UdpIn) InetSocketAddress(address.host, address.port) else null
-                val socket = try {
-                    aSocket(selector).udp().bind(local) {
-                        receiveBufferSize = RECEIVE_BUFFER_BYTES
-                        sendBufferSize = 1 shl 20
-                    }
-                } catch (e: BindException) {
-                    if (e.message.orEmpty().contains("in use", ignoreCase = true)) throw PortInUse(address, e)
-                    throw LinkException("cannot listen on ${address.host}:${address.port}: ${e.message}", e)
-                } catch (e: java.nio.channels.UnresolvedAddressException) {
-                    throw HostUnreachable(address, "unknown host '${address.host}'", e)
-                }
-                return UdpLink(address, selector, socket, remote)
-            } catch (e: Throwable) {
-                selector.close()
-                throw e
+            val remote = if (address is LinkAddress.UdpOut) {
+                val resolved = java.net.InetSocketAddress(address.host, address.port)
+                if (resolved.isUnresolved) throw HostUnreachable(address, "unknown host '${address.host}'")
+                LinkPeer(InetSocketAddress(address.host, address.port))
+            } else {
+                null
             }
+            val local = if (address is LinkAddress.UdpIn) InetSocketAddress(address.host, address.port) else null
+            val socket = try {
+                aSocket(Selectors.shared).udp().bind(local) {
+                    receiveBufferSize = RECEIVE_BUFFER_BYTES
+                    sendBufferSize = 1 shl 20
+                }
+            } catch (e: BindException) {
+                if (e.message.orEmpty().contains("in use", ignoreCase = true)) throw PortInUse(address, e)
+                throw LinkException("cannot listen on ${address.host}:${address.port}: ${e.message}", e)
+            } catch (e: java.nio.channels.UnresolvedAddressException) {
+                throw HostUnreachable(address, "unknown host '${address.host}'", e)
+            }
+            return UdpLink(address, socket, remote)
         }
     }
 }
