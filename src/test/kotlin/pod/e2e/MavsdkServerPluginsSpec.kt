@@ -11,6 +11,7 @@ import kotlinx.coroutines.withTimeout
 import pod.core.vehicle.Autopilot
 import pod.mavlink.command.CommandRejected
 import pod.mavlink.command.CommandResult
+import pod.mavlink.command.CommandTimeout
 import pod.mavlink.command.CommandTiming
 import pod.mavlink.command.VehicleCommand
 import pod.mavlink.param.ParamEncoding
@@ -21,6 +22,7 @@ import kotlin.time.Duration.Companion.seconds
 
 private const val MAV_CMD_NAV_TAKEOFF = 22
 private const val MAV_CMD_COMPONENT_ARM_DISARM = 400
+private const val MAV_CMD_DO_SET_SERVO = 183
 
 /** 2²⁴ + 1 and + 3: integers a float cannot hold, so only a bit-for-bit encoding carries them. */
 private const val BIG = 16_777_217
@@ -115,6 +117,16 @@ class MavsdkServerPluginsSpec : StringSpec({
                 it["arm"] shouldBe "true"
             }
             vehicle.telemetry.armed.value shouldBe false
+        }
+    }
+
+    "MAVSDK's server components leave a command they have no handler for unanswered, so Pod fails with CommandTimeout" {
+        withMavsdkVehicle("--no-mission-server", "--action=armable") { vehicle, _ ->
+            vehicle.commands.timing = QUICK
+            // MAV_CMD_DO_SET_SERVO: no MAVSDK server plugin handles it, and MAVSDK sends no UNSUPPORTED.
+            val error = shouldThrow<CommandTimeout> { vehicle.commands.send(VehicleCommand(MAV_CMD_DO_SET_SERVO, param1 = 9f, param2 = 1500f)) }
+            error.waitingFor shouldBe "COMMAND_ACK"
+            error.attempts shouldBeGreaterThan 1
         }
     }
 
