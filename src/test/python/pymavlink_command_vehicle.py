@@ -8,7 +8,8 @@ Sends a PX4 quadrotor heartbeat at 1 Hz to 127.0.0.1:PORT and answers, per MAV_C
                                with result_param2 7
     400 COMPONENT_ARM_DISARM   TEMPORARILY_REJECTED to the first two sends, ACCEPTED after
     178 DO_CHANGE_SPEED        ACCEPTED addressed to system 99 (not the asker), ACCEPTED from
-                               component 154 (not the autopilot), then DENIED with result_param2 3
+                               component 154 (not the autopilot), STATUSTEXTs at NOTICE and at WARNING,
+                               then DENIED with result_param2 3
     20 NAV_RETURN_TO_LAUNCH    ACCEPTED as a MAVLink 1.0 frame from the v1.0 dialect: command and
                                result only (3 bytes)
     17 NAV_LOITER_UNLIM        ACCEPTED as pymavlink's force_mavlink1 sends it: a MAVLink 1 frame
@@ -105,6 +106,9 @@ def main() -> None:
         elif msg.command == 178:
             ack(178, mav.MAV_RESULT_ACCEPTED, (99, 190))
             ack(178, mav.MAV_RESULT_ACCEPTED, asker, from_component=154)
+            link.mav.statustext_send(mav.MAV_SEVERITY_NOTICE, b"Speed change requested")
+            link.mav.statustext_send(mav.MAV_SEVERITY_WARNING, b"Speed 12 m/s above limit")
+            emit({"event": "status_text", "texts": 2})
             ack(178, mav.MAV_RESULT_DENIED, asker, result_param2=3, after=0.05)
         elif msg.command == 20:
             ack(20, mav.MAV_RESULT_ACCEPTED, asker, mavlink="1.0")

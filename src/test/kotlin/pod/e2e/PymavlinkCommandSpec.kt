@@ -3,6 +3,9 @@ package pod.e2e
 import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.shouldBe
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.CoroutineStart
+import kotlinx.coroutines.async
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.filter
 import kotlinx.coroutines.flow.first
@@ -22,8 +25,9 @@ private const val SYSID = 23
 /**
  * Runs [block] with a Pod ground station listening on loopback and pymavlink_command_vehicle.py
  * (a foreign MAVLink encoder answering commands with scripted COMMAND_ACK sequences) sending to it.
+ * [block] runs in the scope of the ground station.
  */
-private suspend fun withScriptedVehicle(block: suspend (MavlinkVehicle, JsonPeer) -> Unit) = coroutineScope {
+private suspend fun withScriptedVehicle(block: suspend CoroutineScope.(MavlinkVehicle, JsonPeer) -> Unit) = coroutineScope {
     val gcs = GroundStation.open("udpin://127.0.0.1:0", this)
     val peer = Python.startJson("pymavlink_command_vehicle.py", gcs.link.localPort, SYSID, 30)
     try {
@@ -63,11 +67,16 @@ class PymavlinkCommandSpec : StringSpec({
         }
     }
 
-    "acks addressed to another system or sent by another component are not taken for the answer" {
+    "acks addressed to another system or sent by another component are not taken for the answer; the refusal carries the vehicle's warning" {
         withScriptedVehicle { vehicle, peer ->
+            // MavlinkVehicle.statusTexts does not replay: listen before sending.
+            val texts = async(start = CoroutineStart.UNDISPATCHED) { vehicle.statusTexts.take(2).toList() }
             val error = shouldThrow<CommandRejected> { vehicle.commands.send(VehicleCommand(178, param1 = 1f, param2 = 12f)) }
             error.result shouldBe CommandResult.DENIED
             error.attempts shouldBe 1
+            // pymavlink's STATUSTEXT (MAVLink 2, id and chunk_seq truncated away): NOTICE is chatter, WARNING explains.
+            error.statusTexts shouldBe listOf("Speed 12 m/s above limit")
+            withTimeout(2.seconds) { texts.await() }.map { it.text } shouldBe listOf("Speed change requested", "Speed 12 m/s above limit")
             peer.events("ack", 178, 3).map { it["target_system"] + "/" + it["from_component"] + "/" + it["result"] } shouldBe
                 listOf("99/1/0", "255/154/0", "255/1/2")
         }
