@@ -9,12 +9,7 @@ import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionType
 import pod.sim.SimVehicle
 import pod.sim.SimVehicleConfig
-import java.net.DatagramSocket
-import java.net.InetAddress
 import kotlin.time.Duration.Companion.seconds
-
-/** A UDP port on loopback that was free a moment ago (MAVSDK cannot report the port it bound). */
-private fun freeUdpPort(): Int = DatagramSocket(0, InetAddress.getLoopbackAddress()).use { it.localPort }
 
 /** What mavsdk_gcs.py reported: the system it found and the items it downloaded. */
 private class GcsRun(val system: Map<String, String>, val items: List<MissionItem>)

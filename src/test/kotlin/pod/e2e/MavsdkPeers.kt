@@ -1,7 +1,39 @@
 package pod.e2e
 
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.withTimeout
+import pod.mavlink.GroundStation
+import pod.mavlink.MavlinkVehicle
 import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionType
+import java.net.DatagramSocket
+import java.net.InetAddress
+import kotlin.time.Duration.Companion.seconds
+
+/** The system id mavsdk_vehicle.py is started with. */
+internal const val MAVSDK_VEHICLE_SYSID = 17
+
+/**
+ * Runs [block] with a Pod ground station listening on loopback and MAVSDK 4 as the vehicle
+ * (mavsdk_vehicle.py with [flags]: an AUTOPILOT component sending to our port; with a
+ * MissionRawServer unless told otherwise, and ParamServer / ActionServer when asked).
+ */
+internal suspend fun withMavsdkVehicle(vararg flags: String, block: suspend (MavlinkVehicle, JsonPeer) -> Unit) = coroutineScope {
+    val gcs = GroundStation.open("udpin://127.0.0.1:0", this)
+    val peer = Python.startJson("mavsdk_vehicle.py", gcs.link.localPort, MAVSDK_VEHICLE_SYSID, 40, *flags)
+    try {
+        withTimeout(15.seconds) { peer.await("ready") }
+        val vehicle = withTimeout(10.seconds) { gcs.vehicles.first { MAVSDK_VEHICLE_SYSID in it } }.getValue(MAVSDK_VEHICLE_SYSID)
+        withTimeout(30.seconds) { block(vehicle, peer) }
+    } finally {
+        peer.stop()
+        gcs.close()
+    }
+}
+
+/** A UDP port on loopback that was free a moment ago (MAVSDK cannot report the port it bound). */
+internal fun freeUdpPort(): Int = DatagramSocket(0, InetAddress.getLoopbackAddress()).use { it.localPort }
 
 /**
  * A mission of [count] items (count ≥ 3) that uses what MISSION_ITEM_INT carries: a takeoff with

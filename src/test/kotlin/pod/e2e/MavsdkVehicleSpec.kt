@@ -10,12 +10,9 @@ import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.delay
-import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withTimeout
 import pod.core.vehicle.Autopilot
-import pod.mavlink.GroundStation
-import pod.mavlink.MavlinkVehicle
 import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionTimeout
 import pod.mavlink.mission.MissionType
@@ -24,25 +21,6 @@ import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
-
-private const val SYSID = 17
-
-/**
- * Runs [block] with a Pod ground station listening on loopback and MAVSDK 4 as the vehicle
- * (mavsdk_vehicle.py: an AUTOPILOT component with MissionRawServer, sending to our port).
- */
-private suspend fun withMavsdkVehicle(vararg flags: String, block: suspend (MavlinkVehicle, JsonPeer) -> Unit) = coroutineScope {
-    val gcs = GroundStation.open("udpin://127.0.0.1:0", this)
-    val peer = Python.startJson("mavsdk_vehicle.py", gcs.link.localPort, SYSID, 40, *flags)
-    try {
-        withTimeout(15.seconds) { peer.await("ready") }
-        val vehicle = withTimeout(10.seconds) { gcs.vehicles.first { SYSID in it } }.getValue(SYSID)
-        withTimeout(30.seconds) { block(vehicle, peer) }
-    } finally {
-        peer.stop()
-        gcs.close()
-    }
-}
 
 /** The items MAVSDK printed for its [upload]-th incoming list, once it reported the list complete. */
 private suspend fun JsonPeer.received(upload: Int): Pair<String, List<MissionItem>> {

@@ -88,6 +88,12 @@ internal class JsonPeer(private val name: String, val process: Process) {
         return found
     }
 
+    /** Writes [line] and a newline to the peer's stdin (scripts that pause at a checkpoint read one). */
+    fun send(line: String) {
+        process.outputStream.write("$line\n".toByteArray())
+        process.outputStream.flush()
+    }
+
     /** Closes the peer's stdin (scripts that watch it exit), then ends it if it has not exited within 3 s. */
     fun stop() {
         try {
