@@ -188,13 +188,14 @@ def main() -> int:
               "vehicle": system.vehicle_type().name})
 
         telemetry = Telemetry(system)
-        streams = {name: Latest() for name in ("position", "home", "gps", "armed", "in_air")}
+        streams = {name: Latest() for name in ("position", "home", "gps", "armed", "in_air", "health")}
         texts = Latest()
         telemetry.subscribe_position(streams["position"].update)
         telemetry.subscribe_home(streams["home"].update)
         telemetry.subscribe_gps_info(streams["gps"].update)
         telemetry.subscribe_armed(streams["armed"].update)
         telemetry.subscribe_in_air(streams["in_air"].update)
+        telemetry.subscribe_health(streams["health"].update)
 
         def on_text(text, _user_data):
             emit({"event": "status_text", "type": text.type.name, "text": text.text})
@@ -202,12 +203,12 @@ def main() -> int:
 
         telemetry.subscribe_status_text(on_text)
 
-        # Telemetry.health() is not waited for: its global-position and armable flags come only
-        # from SYS_STATUS sensor bits (see the "position" event for what they were).
+        # What MAVSDK's own examples wait for: global position and home OK (from SYS_STATUS sensor
+        # bits and HOME_POSITION).
         streams["position"].wait(lambda p: not math.isnan(p.latitude_deg), 10, "position")
         home = streams["home"].wait(lambda h: not math.isnan(h.latitude_deg), 10, "home position")
         gps = streams["gps"].wait(lambda g: g.fix_type.name in ("FIX_3D", "FIX_DGPS", "RTK_FLOAT", "RTK_FIXED"), 10, "3D fix")
-        health = telemetry.health()
+        health = streams["health"].wait(lambda h: h.is_global_position_ok and h.is_home_position_ok and h.is_armable, 10, "health")
         emit({"event": "position", "fix": gps.fix_type.name, "satellites": gps.num_satellites,
               "home_amsl": home.absolute_altitude_m,
               **{f"health_{k.removeprefix('is_')}": v for k, v in vars(health).items()}})

@@ -67,6 +67,9 @@ class MavsdkActionSpec : StringSpec({
             ready["fix"] shouldBe "FIX_3D"
             ready["home_amsl"]!!.toDouble() shouldBe (SimVehicleConfig.DEFAULT_HOME.altitude.meters plusOrMinus 0.01)
             ready["health_home_position_ok"] shouldBe "true"
+            ready["health_global_position_ok"] shouldBe "true"
+            ready["health_armable"] shouldBe "true"
+            ready["health_accelerometer_calibration_ok"] shouldBe "true"
 
             peer.atCheckpoint("params") {
                 val params = peer.events.replayCache.filter { it["event"] == "param" }

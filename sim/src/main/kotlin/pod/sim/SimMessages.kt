@@ -19,6 +19,7 @@ import io.dronefleet.mavlink.common.GpsRawInt
 import io.dronefleet.mavlink.common.HomePosition
 import io.dronefleet.mavlink.common.MavLandedState
 import io.dronefleet.mavlink.common.MavVtolState
+import io.dronefleet.mavlink.common.MavSysStatusSensor
 import io.dronefleet.mavlink.common.SysStatus
 import io.dronefleet.mavlink.minimal.Heartbeat
 import io.dronefleet.mavlink.minimal.MavState
@@ -112,7 +113,16 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
 
     private fun timeBootMs(): Long = bootedAt.elapsedNow().inWholeMilliseconds and 0xFFFF_FFFFL
 
+    // Sensors a ground station checks before flight (MAVSDK's health flags come from these bits):
+    // present and enabled always; GPS healthy once it has a fix, pre-arm checks once it could arm.
     private fun sysStatus(s: SimState): SysStatus = SysStatus.builder()
+        .onboardControlSensorsPresent(EnumValue.create<MavSysStatusSensor>(SENSORS or SENSOR_PREARM_CHECK))
+        .onboardControlSensorsEnabled(EnumValue.create<MavSysStatusSensor>(SENSORS or SENSOR_PREARM_CHECK))
+        .onboardControlSensorsHealth(
+            EnumValue.create<MavSysStatusSensor>(
+                (SENSORS and SENSOR_GPS.inv()) or (if (s.positionReady) SENSOR_GPS or SENSOR_PREARM_CHECK else 0),
+            ),
+        )
         .voltageBattery((packVoltage(s.charge) * 1000).roundToInt())
         .currentBattery(if (s.armed) 1500 else 0) // cA: 15 A hovering
         .batteryRemaining((s.charge * 100).roundToInt())
@@ -176,6 +186,10 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
             MessageIds.GLOBAL_POSITION_INT, MessageIds.HOME_POSITION, MessageIds.EXTENDED_SYS_STATE,
             MessageIds.VFR_HUD, MessageIds.MISSION_CURRENT,
         )
+        const val SENSOR_GPS = 0x20
+        const val SENSOR_PREARM_CHECK = 0x1000_0000
+        /** Gyro, accelerometer, magnetometer, barometer, GPS, motor outputs, battery (MAV_SYS_STATUS_SENSOR bits). */
+        const val SENSORS = 0x1 or 0x2 or 0x4 or 0x8 or SENSOR_GPS or 0x8000 or 0x200_0000
         const val MODE_FLAG_CUSTOM_MODE_ENABLED = 1
         const val MODE_FLAG_SAFETY_ARMED = 128
     }
