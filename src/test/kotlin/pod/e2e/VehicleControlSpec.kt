@@ -1,5 +1,6 @@
 package pod.e2e
 
+import io.dronefleet.mavlink.common.AutopilotVersion
 import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.collections.shouldNotBeEmpty
@@ -7,7 +8,13 @@ import io.kotest.matchers.longs.shouldBeGreaterThan
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import io.kotest.matchers.types.shouldBeInstanceOf
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
+import kotlinx.coroutines.CoroutineStart
+import kotlinx.coroutines.async
 import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.flow.mapNotNull
 import kotlinx.coroutines.withTimeout
 import pod.core.units.m
 import pod.core.vehicle.Autopilot
@@ -26,8 +33,6 @@ import pod.sim.SimVehicle
 import pod.sim.SimVehicleConfig
 import pod.sim.fault.LinkFaults
 import pod.sim.fault.LossyRelay
-import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.Duration.Companion.seconds
 
 /** Runs [block] against one simulated vehicle on loopback. */
 private suspend fun flying(
@@ -140,6 +145,24 @@ class VehicleControlSpec : StringSpec({
                 it.type.isInteger shouldBe true
             }
             v.params.read("MPC_XY_CRUISE").value.shouldBeInstanceOf<Double>()
+        }
+    }
+
+    "asked with REQUEST_MESSAGE, a simulated autopilot describes itself: ArduPilot casts integer parameters, PX4 copies their bits" {
+        for ((systemId, autopilot) in listOf(48 to Autopilot.ARDUPILOT, 49 to Autopilot.PX4)) {
+            flying(SimVehicleConfig(systemId = systemId, autopilot = autopilot)) { v, _ ->
+                coroutineScope {
+                    val version = async(start = CoroutineStart.UNDISPATCHED) {
+                        withTimeout(5.seconds) { v.messages.mapNotNull { it.message as? AutopilotVersion }.first() }
+                    }
+                    v.commands.send(VehicleCommand(512, param1 = 148f)).result shouldBe CommandResult.ACCEPTED
+                    val capabilities = version.await().capabilities().value()
+                    val (castBit, bytewiseBit) = 0x20000 to 0x10
+                    (capabilities and castBit != 0) shouldBe (autopilot == Autopilot.ARDUPILOT)
+                    (capabilities and bytewiseBit != 0) shouldBe (autopilot == Autopilot.PX4)
+                    (capabilities and 0x4 != 0) shouldBe true // MISSION_INT
+                }
+            }
         }
     }
 })

@@ -1,38 +1,41 @@
 package pod.sim
 
 import io.dronefleet.mavlink.common.Attitude
+import io.dronefleet.mavlink.common.AutopilotVersion
 import io.dronefleet.mavlink.common.CameraImageCaptured
 import io.dronefleet.mavlink.common.CommandAck
-import io.dronefleet.mavlink.common.MavCmd
-import io.dronefleet.mavlink.common.MavParamType
-import io.dronefleet.mavlink.common.MavResult
-import io.dronefleet.mavlink.common.MavSeverity
-import io.dronefleet.mavlink.common.MissionCurrent
-import io.dronefleet.mavlink.common.MissionItemReached
-import io.dronefleet.mavlink.common.ParamValue
-import io.dronefleet.mavlink.common.Statustext
-import io.dronefleet.mavlink.common.VfrHud
 import io.dronefleet.mavlink.common.ExtendedSysState
 import io.dronefleet.mavlink.common.GlobalPositionInt
 import io.dronefleet.mavlink.common.GpsFixType
 import io.dronefleet.mavlink.common.GpsRawInt
 import io.dronefleet.mavlink.common.HomePosition
+import io.dronefleet.mavlink.common.MavCmd
 import io.dronefleet.mavlink.common.MavLandedState
-import io.dronefleet.mavlink.common.MavVtolState
+import io.dronefleet.mavlink.common.MavParamType
+import io.dronefleet.mavlink.common.MavProtocolCapability
+import io.dronefleet.mavlink.common.MavResult
+import io.dronefleet.mavlink.common.MavSeverity
 import io.dronefleet.mavlink.common.MavSysStatusSensor
+import io.dronefleet.mavlink.common.MavVtolState
+import io.dronefleet.mavlink.common.MissionCurrent
+import io.dronefleet.mavlink.common.MissionItemReached
+import io.dronefleet.mavlink.common.ParamValue
+import io.dronefleet.mavlink.common.Statustext
 import io.dronefleet.mavlink.common.SysStatus
+import io.dronefleet.mavlink.common.VfrHud
 import io.dronefleet.mavlink.minimal.Heartbeat
 import io.dronefleet.mavlink.minimal.MavState
 import io.dronefleet.mavlink.util.EnumValue
+import java.math.BigInteger
+import kotlin.math.roundToInt
+import kotlin.math.roundToLong
+import kotlin.time.TimeMark
+import pod.core.vehicle.Autopilot
 import pod.core.vehicle.LandedState
 import pod.mavlink.MavlinkEnums
 import pod.sim.autopilot.SimOutput
 import pod.sim.autopilot.SimParameters
 import pod.sim.autopilot.packVoltage
-import java.math.BigInteger
-import kotlin.math.roundToInt
-import kotlin.math.roundToLong
-import kotlin.time.TimeMark
 
 /** Builds the messages a simulated vehicle streams from its [SimState]. */
 internal class SimMessages(private val config: SimVehicleConfig, private val bootedAt: TimeMark) {
@@ -48,7 +51,24 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
         MessageIds.EXTENDED_SYS_STATE -> extendedSysState(s)
         MessageIds.VFR_HUD -> vfrHud(s)
         MessageIds.MISSION_CURRENT -> missionCurrent(s.missionCurrent)
+        MessageIds.AUTOPILOT_VERSION -> autopilotVersion()
         else -> null
+    }
+
+    /**
+     * What the autopilot can do: MISSION_ITEM_INT, COMMAND_INT, MAVLink 2, fences and rally points,
+     * and how it packs integer parameters (C cast on ArduPilot, bytewise on PX4). The version is
+     * the one the flavour claims to behave like: ArduPilot 4.7.0, PX4 1.16.0 (official releases).
+     */
+    private fun autopilotVersion(): AutopilotVersion {
+        val ardupilot = config.autopilot == Autopilot.ARDUPILOT
+        val encoding = if (ardupilot) CAPABILITY_PARAM_ENCODE_C_CAST else CAPABILITY_PARAM_ENCODE_BYTEWISE
+        val (major, minor) = if (ardupilot) 4 to 7 else 1 to 16
+        return AutopilotVersion.builder()
+            .capabilities(EnumValue.create<MavProtocolCapability>(CAPABILITIES or encoding))
+            .flightSwVersion((major.toLong() shl 24) or (minor.toLong() shl 16) or OFFICIAL_RELEASE)
+            .uid(BigInteger.valueOf(config.systemId.toLong()))
+            .build()
     }
 
     /** The message for one of the autopilot's [SimOutput]s. */
@@ -184,8 +204,14 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
         val SUPPORTED = setOf(
             MessageIds.SYS_STATUS, MessageIds.GPS_RAW_INT, MessageIds.ATTITUDE,
             MessageIds.GLOBAL_POSITION_INT, MessageIds.HOME_POSITION, MessageIds.EXTENDED_SYS_STATE,
-            MessageIds.VFR_HUD, MessageIds.MISSION_CURRENT,
+            MessageIds.VFR_HUD, MessageIds.MISSION_CURRENT, MessageIds.AUTOPILOT_VERSION,
         )
+        /** MISSION_INT, COMMAND_INT, MAVLINK2, MISSION_FENCE, MISSION_RALLY (MAV_PROTOCOL_CAPABILITY bits). */
+        const val CAPABILITIES = 0x4 or 0x8 or 0x2000 or 0x4000 or 0x8000
+        const val CAPABILITY_PARAM_ENCODE_BYTEWISE = 0x10
+        const val CAPABILITY_PARAM_ENCODE_C_CAST = 0x20000
+        /** FIRMWARE_VERSION_TYPE_OFFICIAL in the low byte of flight_sw_version. */
+        const val OFFICIAL_RELEASE = 255L
         const val SENSOR_GPS = 0x20
         const val SENSOR_PREARM_CHECK = 0x1000_0000
         /** Gyro, accelerometer, magnetometer, barometer, GPS, motor outputs, battery (MAV_SYS_STATUS_SENSOR bits). */

@@ -90,6 +90,8 @@ public object MessageIds {
 
     /** GLOBAL_POSITION_INT. */
     public const val GLOBAL_POSITION_INT: Int = 33
+    /** AUTOPILOT_VERSION (sent when asked with MAV_CMD_REQUEST_MESSAGE, not streamed). */
+    public const val AUTOPILOT_VERSION: Int = 148
     /** HOME_POSITION. */
     public const val HOME_POSITION: Int = 242
     /** EXTENDED_SYS_STATE. */
