@@ -8,6 +8,7 @@ import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.exchange
+import java.util.concurrent.atomic.AtomicLong
 import kotlin.time.Duration.Companion.nanoseconds
 import kotlin.time.TimeSource
 
@@ -55,7 +56,9 @@ public class CommandService internal constructor(
         val ourSystem = vehicle.station.config.systemId
         val machine = CommandTransaction(command, timing, roundTrip())
         val texts = ArrayList<String>()
+        val heard = AtomicLong() // messages from the vehicle's autopilot during the exchange (counted on the collector's thread)
         return vehicle.exchange(command.label, { inbound ->
+            if (inbound.frame.componentId == identity.componentId) heard.incrementAndGet()
             when (val message = inbound.message) {
                 is Statustext -> {
                     if (message.severity().value() <= MAV_SEVERITY_WARNING) synchronized(texts) { texts += message.text().trimEnd('\u0000') }
@@ -69,8 +72,10 @@ public class CommandService internal constructor(
             }
         }) { replies ->
             var step = machine.start(now())
+            var heardAtSend = 0L
             while (true) {
                 if (step.confirmation >= 0) {
+                    heardAtSend = heard.get()
                     vehicle.send(CommandWire.encode(command, identity.systemId, identity.componentId, step.confirmation))
                 }
                 val outcome = step.outcome
@@ -83,7 +88,7 @@ public class CommandService internal constructor(
                     replies.onReceive { reply ->
                         machine.onReply(reply, now()).also { if (reply.result == CommandResult.IN_PROGRESS) onProgress(machine.progress) }
                     }
-                    if (step.wakeAt != Long.MAX_VALUE) onTimeout(wait.nanoseconds) { machine.onTimer(now()) }
+                    if (step.wakeAt != Long.MAX_VALUE) onTimeout(wait.nanoseconds) { machine.onTimer(now(), vehicleTalking = heard.get() > heardAtSend) }
                 }
             }
             @Suppress("UNREACHABLE_CODE")

@@ -9,9 +9,11 @@ import kotlin.time.Duration.Companion.seconds
  *
  * A command is resent (with `confirmation` counting up) whenever no COMMAND_ACK came within the
  * attempt timeout, which follows the measured round trip between [minAttemptTimeout] and
- * [maxAttemptTimeout] and grows by half on each resend; Pod gives up when nothing at all came back for
- * [timeout]. Resending on a short timer is what gets commands through lossy links: at 30 % loss
- * each way only half the round trips complete.
+ * [maxAttemptTimeout]. While the vehicle keeps sending other messages the loss was on a live link,
+ * and the command goes again after the same timeout, up to [quickResends] times; otherwise the
+ * timeout grows by half on each resend, so a silent or swamped vehicle is not hammered. Pod gives
+ * up when nothing at all came back for [timeout]. Resending on a short timer is what gets commands
+ * through lossy links: at 30 % loss each way only half the round trips complete.
  */
 public data class CommandTiming(
     /** Silence after which a command fails with [CommandTimeout]. */
@@ -28,6 +30,8 @@ public data class CommandTiming(
     public val temporarilyRejectedFor: Duration = 5.seconds,
     /** Longest wait for the next answer after the vehicle said IN_PROGRESS. */
     public val inProgressTimeout: Duration = 30.seconds,
+    /** Resends at the unchanged attempt timeout while the vehicle is heard, before backing off. */
+    public val quickResends: Int = 8,
 ) {
     init {
         require(minAttemptTimeout.isPositive()) { "minAttemptTimeout must be > 0, was $minAttemptTimeout" }
@@ -39,6 +43,7 @@ public data class CommandTiming(
         require(retryDelay.isPositive()) { "retryDelay must be > 0, was $retryDelay" }
         require(!temporarilyRejectedFor.isNegative()) { "temporarilyRejectedFor must be ≥ 0, was $temporarilyRejectedFor" }
         require(inProgressTimeout.isPositive()) { "inProgressTimeout must be > 0, was $inProgressTimeout" }
+        require(quickResends in 0..100) { "quickResends must be in 0..100, was $quickResends" }
     }
 }
 

@@ -46,6 +46,7 @@ internal class CommandTransaction(
     private var attempts = 0
     private var attemptTimeout = 0L
     private var firstRejectedAt = -1L
+    private var quickResends = 0
     private var wakeAt = Long.MAX_VALUE
 
     /** Percent done as the vehicle last reported with IN_PROGRESS, or null. */
@@ -85,7 +86,13 @@ internal class CommandTransaction(
         }
     }
 
-    fun onTimer(now: Long): Step {
+    /**
+     * The timer fired at [now]. [vehicleTalking] says whether anything at all came from the
+     * vehicle since the last send: then the command or its ack was lost on a live link, and the
+     * command goes again after the same short timeout (up to [CommandTiming.quickResends] times);
+     * from a silent vehicle the wait grows by half each time.
+     */
+    fun onTimer(now: Long, vehicleTalking: Boolean = false): Step {
         if (phase == Phase.DONE || now < wakeAt) return Step(wakeAt = wakeAt)
         return when (phase) {
             Phase.IN_PROGRESS -> finish(Outcome.TimedOut(attempts, now - startedAt, "a final result after IN_PROGRESS${progress?.let { " ($it %)" } ?: ""}"))
@@ -97,7 +104,11 @@ internal class CommandTransaction(
                 if (now - lastHeardAt >= timing.timeout.inWholeNanoseconds) {
                     finish(Outcome.TimedOut(attempts, now - startedAt, "COMMAND_ACK"))
                 } else {
-                    attemptTimeout = (attemptTimeout * 3 / 2).coerceAtMost(timing.maxAttemptTimeout.inWholeNanoseconds)
+                    if (vehicleTalking && quickResends < timing.quickResends) {
+                        quickResends++
+                    } else {
+                        attemptTimeout = (attemptTimeout * 3 / 2).coerceAtMost(timing.maxAttemptTimeout.inWholeNanoseconds)
+                    }
                     send(now)
                 }
             }

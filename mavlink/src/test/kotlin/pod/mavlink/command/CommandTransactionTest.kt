@@ -51,6 +51,25 @@ class CommandTransactionTest : StringSpec({
         error.shouldBeInstanceOf<CommandTimeout>().attempts shouldBe confirmations.size
     }
 
+    "while the vehicle keeps talking a lost command goes again after the same timeout, then backs off; silence backs off at once" {
+        val timing = CommandTiming(quickResends = 3)
+        fun waits(talking: Boolean): List<Long> {
+            val t = transaction(timing)
+            var step = t.start(0)
+            val waits = mutableListOf<Long>()
+            var now = 0L
+            while (step.outcome == null && waits.size < 6) {
+                waits += step.wakeAt - now
+                now = step.wakeAt
+                step = t.onTimer(now, vehicleTalking = talking)
+            }
+            return waits
+        }
+        val base = timing.initialAttemptTimeout.inWholeNanoseconds
+        waits(talking = true) shouldBe listOf(base, base, base, base, base * 3 / 2, base * 9 / 4).map { it.coerceAtMost(timing.maxAttemptTimeout.inWholeNanoseconds) }
+        waits(talking = false) shouldBe listOf(base, base * 3 / 2, base * 9 / 4, base * 27 / 8, base * 81 / 16, base * 243 / 32).map { it.coerceAtMost(timing.maxAttemptTimeout.inWholeNanoseconds) }
+    }
+
     "DENIED, UNSUPPORTED and FAILED end the command at once with the vehicle's texts" {
         for (result in listOf(CommandResult.DENIED, CommandResult.UNSUPPORTED, CommandResult.FAILED, CommandResult.CANCELLED)) {
             val t = transaction()
@@ -141,7 +160,7 @@ class CommandTransactionTest : StringSpec({
                     step = t.onReply(reply(CommandResult.ACCEPTED), now)
                 } else {
                     now = step.wakeAt
-                    step = t.onTimer(now)
+                    step = t.onTimer(now, vehicleTalking = true) // its telemetry keeps coming through the loss
                 }
             }
             withClue(seed) { step.outcome.shouldBeInstanceOf<CommandTransaction.Outcome.Accepted>() }
