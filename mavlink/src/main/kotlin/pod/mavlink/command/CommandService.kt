@@ -10,6 +10,7 @@ import pod.mavlink.MavlinkVehicle
 import pod.mavlink.exchange
 import java.util.concurrent.atomic.AtomicLong
 import kotlin.time.Duration.Companion.nanoseconds
+import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
 
 /**
@@ -56,9 +57,10 @@ public class CommandService internal constructor(
         val ourSystem = vehicle.station.config.systemId
         val machine = CommandTransaction(command, timing, roundTrip())
         val texts = ArrayList<String>()
-        val heard = AtomicLong() // messages from the vehicle's autopilot during the exchange (counted on the collector's thread)
+        // When the vehicle's autopilot last sent anything, on this exchange's clock (set on the collector's thread).
+        val lastHeard = AtomicLong(-vehicle.lastHeartbeat.elapsedNow().inWholeNanoseconds)
         return vehicle.exchange(command.label, { inbound ->
-            if (inbound.frame.componentId == identity.componentId) heard.incrementAndGet()
+            if (inbound.frame.componentId == identity.componentId) lastHeard.set(now())
             when (val message = inbound.message) {
                 is Statustext -> {
                     if (message.severity().value() <= MAV_SEVERITY_WARNING) synchronized(texts) { texts += message.text().trimEnd('\u0000') }
@@ -72,10 +74,8 @@ public class CommandService internal constructor(
             }
         }) { replies ->
             var step = machine.start(now())
-            var heardAtSend = 0L
             while (true) {
                 if (step.confirmation >= 0) {
-                    heardAtSend = heard.get()
                     vehicle.send(CommandWire.encode(command, identity.systemId, identity.componentId, step.confirmation))
                 }
                 val outcome = step.outcome
@@ -88,7 +88,7 @@ public class CommandService internal constructor(
                     replies.onReceive { reply ->
                         machine.onReply(reply, now()).also { if (reply.result == CommandResult.IN_PROGRESS) onProgress(machine.progress) }
                     }
-                    if (step.wakeAt != Long.MAX_VALUE) onTimeout(wait.nanoseconds) { machine.onTimer(now(), vehicleTalking = heard.get() > heardAtSend) }
+                    if (step.wakeAt != Long.MAX_VALUE) onTimeout(wait.nanoseconds) { machine.onTimer(now(), vehicleTalking = now() - lastHeard.get() < TALKING_WITHIN_NANOS) }
                 }
             }
             @Suppress("UNREACHABLE_CODE")
@@ -99,5 +99,12 @@ public class CommandService internal constructor(
     private companion object {
         /** Texts up to this severity explain a refusal; notices and info are chatter. */
         const val MAV_SEVERITY_WARNING = 4
+
+        /**
+         * A vehicle heard this recently is alive and the command or its ack was lost: resend
+         * quickly. Heartbeats alone come once a second; a second is also what telemetry streams
+         * at a few Hz leave between messages at 30 % loss only rarely.
+         */
+        val TALKING_WITHIN_NANOS = 1.seconds.inWholeNanoseconds
     }
 }

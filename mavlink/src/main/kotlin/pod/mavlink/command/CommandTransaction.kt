@@ -87,8 +87,8 @@ internal class CommandTransaction(
     }
 
     /**
-     * The timer fired at [now]. [vehicleTalking] says whether anything at all came from the
-     * vehicle since the last send: then the command or its ack was lost on a live link, and the
+     * The timer fired at [now]. [vehicleTalking] says whether the vehicle has been sending other
+     * messages (within the last second): then the command or its ack was lost on a live link, and the
      * command goes again after the same short timeout (up to [CommandTiming.quickResends] times);
      * from a silent vehicle the wait grows by half each time.
      */
