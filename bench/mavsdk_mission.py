@@ -25,12 +25,12 @@ import sys
 import threading
 import time
 
-from mavsdk import ComponentType, Configuration, ConnectionResult, Mavsdk
+from mavsdk import ComponentType, Configuration, Mavsdk
 from mavsdk.plugins.mission_raw import MissionItem, MissionRaw
 
 # The output format and the timed MissionRaw steps are the interop tests' own.
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "src", "test", "python"))
-from mavsdk_peer_io import FIELDS, download, emit, upload  # noqa: E402
+from mavsdk_peer_io import FIELDS, download, emit, listen, upload  # noqa: E402
 
 
 class Watchdog:
@@ -75,11 +75,8 @@ def main() -> int:
     watchdog.arm("ready", args.discover_seconds)
     mavsdk = Mavsdk(Configuration.create_with_component_type(ComponentType.GROUND_STATION))
     try:
-        result = mavsdk.add_any_connection(f"udpin://127.0.0.1:{args.port}")
-        if result != ConnectionResult.SUCCESS:
-            emit({"event": "error", "what": f"add_any_connection: {ConnectionResult(result).name}"})
+        if not listen(mavsdk, args.port):
             return 2
-        emit({"event": "ready", "version": mavsdk.version()})
 
         start = watchdog.arm("system", args.discover_seconds)
         system = mavsdk.first_autopilot(timeout_s=args.discover_seconds)

@@ -36,19 +36,13 @@ import sys
 import threading
 import time
 
-from mavsdk_peer_io import emit
-from mavsdk import ComponentType, Configuration, ConnectionResult, Mavsdk
+from mavsdk_peer_io import emit, listen, start_watchdog
+from mavsdk import ComponentType, Configuration, Mavsdk
 from mavsdk.plugins.action import Action, ActionError, ActionResult
 from mavsdk.plugins.param import Param, ParamError
 from mavsdk.plugins.telemetry import Telemetry
 
 EARTH_RADIUS_M = 6_371_000.0
-
-
-def watchdog(seconds: float) -> None:
-    time.sleep(seconds)
-    emit({"event": "error", "what": f"gave up after {seconds} s"})
-    os._exit(3)
 
 
 class Latest:
@@ -172,14 +166,11 @@ def arm_once(system, texts: Latest) -> int:
 
 def main() -> int:
     port, seconds, scenario = int(sys.argv[1]), float(sys.argv[2]), sys.argv[3]
-    threading.Thread(target=watchdog, args=(seconds,), daemon=True).start()
+    start_watchdog(seconds)
     mavsdk = Mavsdk(Configuration.create_with_component_type(ComponentType.GROUND_STATION))
     try:
-        result = mavsdk.add_any_connection(f"udpin://127.0.0.1:{port}")
-        if result != ConnectionResult.SUCCESS:
-            emit({"event": "error", "what": f"add_any_connection: {ConnectionResult(result).name}"})
+        if not listen(mavsdk, port):
             return 2
-        emit({"event": "ready", "version": mavsdk.version()})
         system = mavsdk.first_autopilot(timeout_s=seconds)
         if system is None:
             emit({"event": "error", "what": "no autopilot heard"})

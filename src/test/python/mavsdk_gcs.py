@@ -17,35 +17,24 @@ A failed step prints its MissionRaw result instead of SUCCESS and the script exi
 run is bounded by SECONDS (exit 3 when they pass). Loopback only.
 """
 import json
-import os
 import sys
-import threading
 import time
 
-from mavsdk_peer_io import FIELDS, download, emit, upload
-from mavsdk import ComponentType, Configuration, ConnectionResult, Mavsdk
+from mavsdk_peer_io import FIELDS, download, emit, listen, start_watchdog, upload
+from mavsdk import ComponentType, Configuration, Mavsdk
 from mavsdk.plugins.mission_raw import MissionItem, MissionRaw
-
-
-def watchdog(seconds: float) -> None:
-    time.sleep(seconds)
-    emit({"event": "error", "what": f"gave up after {seconds} s"})
-    os._exit(3)
 
 
 def main() -> int:
     port, items_json, seconds = int(sys.argv[1]), sys.argv[2], float(sys.argv[3])
     download_too = "--download" in sys.argv[4:]
-    threading.Thread(target=watchdog, args=(seconds,), daemon=True).start()
+    start_watchdog(seconds)
     items = [MissionItem(**{f: item[f] for f in FIELDS}) for item in json.loads(items_json)]
 
     mavsdk = Mavsdk(Configuration.create_with_component_type(ComponentType.GROUND_STATION))
     try:
-        result = mavsdk.add_any_connection(f"udpin://127.0.0.1:{port}")
-        if result != ConnectionResult.SUCCESS:
-            emit({"event": "error", "what": f"add_any_connection: {ConnectionResult(result).name}"})
+        if not listen(mavsdk, port):
             return 2
-        emit({"event": "ready", "version": mavsdk.version()})
         system = mavsdk.first_autopilot(timeout_s=seconds)
         if system is None:
             emit({"event": "error", "what": "no autopilot heard"})

@@ -1,10 +1,13 @@
 """Shared by the MAVSDK peers (tests and bench/mavsdk_mission.py): one JSON object per line on
-stdout, thread-safe, and the timed MissionRaw steps of a ground station."""
+stdout, thread-safe, listening as a ground station, a watchdog, and the timed MissionRaw steps of
+a ground station."""
 import json
+import os
 import sys
 import threading
 import time
 
+from mavsdk import ConnectionResult
 from mavsdk.plugins.mission_raw import MissionRawError
 
 #: MissionItem fields in the order the peers print them (named as in MISSION_ITEM_INT).
@@ -48,3 +51,23 @@ def download(mission, start: float) -> bool:
         emit({"event": "item", **{name: getattr(item, name) for name in FIELDS}})
     emit({"event": "downloaded", "result": "SUCCESS", "count": len(back), "seconds": seconds})
     return True
+
+
+def listen(mavsdk, port: int) -> bool:
+    """Listens as a ground station on 127.0.0.1:port and says "ready"; False (and an "error" line)
+    when MAVSDK cannot open the port."""
+    result = mavsdk.add_any_connection(f"udpin://127.0.0.1:{port}")
+    if result != ConnectionResult.SUCCESS:
+        emit({"event": "error", "what": f"add_any_connection: {ConnectionResult(result).name}"})
+        return False
+    emit({"event": "ready", "version": mavsdk.version()})
+    return True
+
+
+def start_watchdog(seconds: float) -> None:
+    """Ends the process (exit 3, with an "error" line) after `seconds`, whatever it is waiting on."""
+    def watch() -> None:
+        time.sleep(seconds)
+        emit({"event": "error", "what": f"gave up after {seconds} s"})
+        os._exit(3)
+    threading.Thread(target=watch, daemon=True).start()

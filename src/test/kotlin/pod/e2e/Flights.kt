@@ -1,29 +1,31 @@
 package pod.e2e
 
+import java.util.concurrent.CopyOnWriteArrayList
+import kotlin.math.roundToLong
+import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Job
+import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withTimeout
 import pod.core.units.Location
 import pod.core.units.m
 import pod.mavlink.GroundStation
+import pod.mavlink.GroundStationConfig
 import pod.mavlink.MavlinkVehicle
+import pod.mavlink.command.MavCommands.DO_LAND_START
+import pod.mavlink.command.MavCommands.NAV_LAND
+import pod.mavlink.command.MavCommands.NAV_LOITER_TURNS
+import pod.mavlink.command.MavCommands.NAV_RETURN_TO_LAUNCH
+import pod.mavlink.command.MavCommands.NAV_TAKEOFF
+import pod.mavlink.command.MavCommands.NAV_WAYPOINT
 import pod.mavlink.mission.MissionItem
-import java.util.concurrent.CopyOnWriteArrayList
-import kotlin.math.roundToLong
-import kotlin.time.Duration.Companion.seconds
+import pod.sim.SimVehicle
+import pod.sim.SimVehicleConfig
 
 /** Missions and helpers for flight tests against simulated vehicles. */
 internal object Flights {
-    const val NAV_WAYPOINT = 16
-    const val NAV_LOITER_TURNS = 18
-    const val NAV_RETURN_TO_LAUNCH = 20
-    const val NAV_LAND = 21
-    const val NAV_TAKEOFF = 22
-    const val DO_LAND_START = 189
-    const val DO_DIGICAM_CONTROL = 203
-
     /** Altitudes above home. */
     private const val FRAME_RELATIVE = 3
 
@@ -57,6 +59,26 @@ internal object Flights {
         item(6, NAV_WAYPOINT, home.offset(500.m, 0.m), 30.0),
         item(7, NAV_LAND, home, 0.0),
     )
+
+    /**
+     * Runs [block] with one simulated vehicle ([config], sending to a fresh ground station on
+     * loopback) once the station sees it ready to arm ([vehicle]); stops both afterwards.
+     */
+    suspend fun flying(
+        config: SimVehicleConfig,
+        station: GroundStationConfig = GroundStationConfig(),
+        block: suspend CoroutineScope.(MavlinkVehicle, SimVehicle) -> Unit,
+    ) = coroutineScope {
+        val gcs = GroundStation.open("udpin://127.0.0.1:0", this, station)
+        val sim = SimVehicle(config.copy(gcs = "udpout://127.0.0.1:${gcs.link.localPort}"))
+        try {
+            sim.start(this)
+            block(vehicle(gcs, config.systemId), sim)
+        } finally {
+            sim.stop()
+            gcs.close()
+        }
+    }
 
     /** The vehicle [systemId] once [gcs] has heard it, has its position and a 3D GPS fix (it can arm). */
     suspend fun vehicle(gcs: GroundStation, systemId: Int): MavlinkVehicle {

@@ -4,6 +4,8 @@ import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.comparables.shouldBeGreaterThan
 import io.kotest.matchers.shouldBe
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.flow.filter
 import kotlinx.coroutines.flow.take
 import kotlinx.coroutines.flow.toList
@@ -13,16 +15,11 @@ import pod.mavlink.command.CommandRejected
 import pod.mavlink.command.CommandResult
 import pod.mavlink.command.CommandTimeout
 import pod.mavlink.command.CommandTiming
+import pod.mavlink.command.MavCommands
 import pod.mavlink.command.VehicleCommand
 import pod.mavlink.param.ParamEncoding
 import pod.mavlink.param.ParamTimeout
 import pod.mavlink.param.ParamType
-import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.Duration.Companion.seconds
-
-private const val MAV_CMD_NAV_TAKEOFF = 22
-private const val MAV_CMD_COMPONENT_ARM_DISARM = 400
-private const val MAV_CMD_DO_SET_SERVO = 183
 
 /** 2²⁴ + 1 and + 3: integers a float cannot hold, so only a bit-for-bit encoding carries them. */
 private const val BIG = 16_777_217
@@ -92,14 +89,14 @@ class MavsdkServerPluginsSpec : StringSpec({
 
     "an armable MAVSDK ActionServer accepts Pod's arm command, reports the request and then heartbeats armed" {
         withMavsdkVehicle("--no-mission-server", "--action=armable") { vehicle, peer ->
-            val reply = vehicle.commands.send(VehicleCommand(MAV_CMD_COMPONENT_ARM_DISARM, param1 = 1f))
+            val reply = vehicle.commands.send(VehicleCommand(MavCommands.COMPONENT_ARM_DISARM, param1 = 1f))
             reply.result shouldBe CommandResult.ACCEPTED
-            reply.command shouldBe MAV_CMD_COMPONENT_ARM_DISARM
+            reply.command shouldBe MavCommands.COMPONENT_ARM_DISARM
             peer.next("arm_disarm").single() shouldBe mapOf("event" to "arm_disarm", "result" to "SUCCESS", "arm" to "true", "force" to "false")
             // VehicleActions.arm() resends the (idempotent) arm and waits for the armed flag in HEARTBEAT.
             vehicle.action.arm()
             vehicle.telemetry.armed.value shouldBe true
-            vehicle.commands.send(VehicleCommand(MAV_CMD_NAV_TAKEOFF, param7 = 10f)).result shouldBe CommandResult.ACCEPTED
+            vehicle.commands.send(VehicleCommand(MavCommands.NAV_TAKEOFF, param7 = 10f)).result shouldBe CommandResult.ACCEPTED
             peer.next("takeoff").single()["result"] shouldBe "SUCCESS"
         }
     }
@@ -107,7 +104,7 @@ class MavsdkServerPluginsSpec : StringSpec({
     "a MAVSDK ActionServer that is not armable answers TEMPORARILY_REJECTED to every resend, and Pod gives up with CommandRejected" {
         withMavsdkVehicle("--no-mission-server", "--action=refusing") { vehicle, peer ->
             vehicle.commands.timing = QUICK
-            val error = shouldThrow<CommandRejected> { vehicle.commands.send(VehicleCommand(MAV_CMD_COMPONENT_ARM_DISARM, param1 = 1f)) }
+            val error = shouldThrow<CommandRejected> { vehicle.commands.send(VehicleCommand(MavCommands.COMPONENT_ARM_DISARM, param1 = 1f)) }
             error.result shouldBe CommandResult.TEMPORARILY_REJECTED
             error.resultCode shouldBe 1
             error.attempts shouldBeGreaterThan 1
@@ -124,7 +121,7 @@ class MavsdkServerPluginsSpec : StringSpec({
         withMavsdkVehicle("--no-mission-server", "--action=armable") { vehicle, _ ->
             vehicle.commands.timing = QUICK
             // MAV_CMD_DO_SET_SERVO: no MAVSDK server plugin handles it, and MAVSDK sends no UNSUPPORTED.
-            val error = shouldThrow<CommandTimeout> { vehicle.commands.send(VehicleCommand(MAV_CMD_DO_SET_SERVO, param1 = 9f, param2 = 1500f)) }
+            val error = shouldThrow<CommandTimeout> { vehicle.commands.send(VehicleCommand(MavCommands.DO_SET_SERVO, param1 = 9f, param2 = 1500f)) }
             error.waitingFor shouldBe "COMMAND_ACK"
             error.attempts shouldBeGreaterThan 1
         }
@@ -132,7 +129,7 @@ class MavsdkServerPluginsSpec : StringSpec({
 
     "a MAVSDK ActionServer that does not allow takeoff answers UNSUPPORTED, which Pod reports at once" {
         withMavsdkVehicle("--no-mission-server", "--action=refusing") { vehicle, peer ->
-            val error = shouldThrow<CommandRejected> { vehicle.commands.send(VehicleCommand(MAV_CMD_NAV_TAKEOFF, param7 = 10f)) }
+            val error = shouldThrow<CommandRejected> { vehicle.commands.send(VehicleCommand(MavCommands.NAV_TAKEOFF, param7 = 10f)) }
             error.result shouldBe CommandResult.UNSUPPORTED
             error.attempts shouldBe 1
             peer.next("takeoff").single() shouldBe mapOf("event" to "takeoff", "result" to "COMMAND_DENIED", "allowed" to "false")

@@ -34,28 +34,11 @@ import pod.sim.SimVehicleConfig
 import pod.sim.fault.LinkFaults
 import pod.sim.fault.LossyRelay
 
-/** Runs [block] against one simulated vehicle on loopback. */
-private suspend fun flying(
-    config: SimVehicleConfig,
-    station: GroundStationConfig = GroundStationConfig(),
-    block: suspend (MavlinkVehicle, SimVehicle) -> Unit,
-) = coroutineScope {
-    val gcs = GroundStation.open("udpin://127.0.0.1:0", this, station)
-    val sim = SimVehicle(config.copy(gcs = "udpout://127.0.0.1:${gcs.link.localPort}"))
-    try {
-        sim.start(this)
-        block(Flights.vehicle(gcs, config.systemId), sim)
-    } finally {
-        sim.stop()
-        gcs.close()
-    }
-}
-
 class VehicleControlSpec : StringSpec({
 
     for ((autopilot, type) in listOf(Autopilot.ARDUPILOT to VehicleType.QUADROTOR, Autopilot.PX4 to VehicleType.QUADROTOR)) {
         "a ${autopilot.name} copter arms, takes off, goes to a point, lands and disarms, each step confirmed" {
-            flying(SimVehicleConfig(systemId = 41, autopilot = autopilot, type = type, timeScale = 10.0)) { v, _ ->
+            Flights.flying(SimVehicleConfig(systemId = 41, autopilot = autopilot, type = type, timeScale = 10.0)) { v, _ ->
                 val home = v.telemetry.position.value!!.location
                 Flights.keepArmedOnGround(v)
                 v.action.arm()
@@ -106,7 +89,7 @@ class VehicleControlSpec : StringSpec({
     }
 
     "refusals are typed: arming with a flat battery says why, takeoff while disarmed fails, an unknown command is unsupported" {
-        flying(SimVehicleConfig(systemId = 43, initialCharge = 0.1)) { v, _ ->
+        Flights.flying(SimVehicleConfig(systemId = 43, initialCharge = 0.1)) { v, _ ->
             val arm = shouldThrow<CommandRejected> { v.action.arm() }
             arm.result shouldBe CommandResult.FAILED
             arm.statusTexts.shouldNotBeEmpty()
@@ -120,26 +103,26 @@ class VehicleControlSpec : StringSpec({
     }
 
     "a vehicle that stopped talking fails a command within its timeout, or as lost once its heartbeat is missed" {
-        flying(SimVehicleConfig(systemId = 44), GroundStationConfig(lostAfter = 30.seconds)) { v, sim ->
+        Flights.flying(SimVehicleConfig(systemId = 44), GroundStationConfig(lostAfter = 30.seconds)) { v, sim ->
             sim.stop()
             v.commands.timing = CommandTiming(timeout = 2.seconds)
             val error = shouldThrow<CommandTimeout> { withTimeout(5.seconds) { v.action.arm() } }
             error.waitingFor shouldBe "COMMAND_ACK"
         }
-        flying(SimVehicleConfig(systemId = 45), GroundStationConfig(lostAfter = 1.seconds)) { v, sim ->
+        Flights.flying(SimVehicleConfig(systemId = 45), GroundStationConfig(lostAfter = 1.seconds)) { v, sim ->
             sim.stop()
             shouldThrow<VehicleLost> { withTimeout(5.seconds) { v.action.arm() } }.systemId shouldBe 45
         }
     }
 
     "parameters read and write through to the simulated autopilot" {
-        flying(SimVehicleConfig(systemId = 46)) { v, _ ->
+        Flights.flying(SimVehicleConfig(systemId = 46)) { v, _ ->
             val speed = v.params.read("WPNAV_SPEED")
             speed.value shouldBe 500.0
             v.params.write("WPNAV_SPEED", 800.0).value shouldBe 800.0
             v.params.read("WPNAV_SPEED").value shouldBe 800.0
         }
-        flying(SimVehicleConfig(systemId = 47, autopilot = Autopilot.PX4)) { v, _ ->
+        Flights.flying(SimVehicleConfig(systemId = 47, autopilot = Autopilot.PX4)) { v, _ ->
             v.params.read("MAV_SYS_ID").let {
                 it.value shouldBe 47.0
                 it.type.isInteger shouldBe true
@@ -150,7 +133,7 @@ class VehicleControlSpec : StringSpec({
 
     "asked with REQUEST_MESSAGE, a simulated autopilot describes itself: ArduPilot casts integer parameters, PX4 copies their bits" {
         for ((systemId, autopilot) in listOf(48 to Autopilot.ARDUPILOT, 49 to Autopilot.PX4)) {
-            flying(SimVehicleConfig(systemId = systemId, autopilot = autopilot)) { v, _ ->
+            Flights.flying(SimVehicleConfig(systemId = systemId, autopilot = autopilot)) { v, _ ->
                 coroutineScope {
                     val version = async(start = CoroutineStart.UNDISPATCHED) {
                         withTimeout(5.seconds) { v.messages.mapNotNull { it.message as? AutopilotVersion }.first() }

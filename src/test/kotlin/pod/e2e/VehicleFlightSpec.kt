@@ -20,139 +20,104 @@ import pod.core.vehicle.LandedState
 import pod.core.vehicle.VehicleType
 import pod.e2e.Flights.recordReached
 import pod.mavlink.GroundStation
+import pod.mavlink.command.MavCommands
 import pod.sim.SimVehicle
 import pod.sim.SimVehicleConfig
 
 class VehicleFlightSpec : StringSpec({
 
     "an ArduPilot copter flies takeoff, five waypoints, two loiter turns and RTL in order, and ends landed and disarmed at home" {
-        coroutineScope {
-            val gcs = GroundStation.open("udpin://127.0.0.1:0", this)
-            val sim = SimVehicle(SimVehicleConfig(systemId = 31, timeScale = 20.0, gcs = "udpout://127.0.0.1:${gcs.link.localPort}"))
-            try {
-                sim.start(this)
-                val vehicle = Flights.vehicle(gcs, 31)
-                val home = SimVehicleConfig.DEFAULT_HOME
-                val mission = Flights.copterSurvey(home)
-                vehicle.mission.upload(mission)
-                val (reached, recording) = recordReached(vehicle)
-                Flights.keepArmedOnGround(vehicle)
-                vehicle.action.arm()
-                vehicle.action.startMission()
-                vehicle.action.awaitLanded(timeout = 60.seconds)
-                recording.cancel()
-                reached shouldBe (1..8).toList()
-                val end = vehicle.telemetry.position.value!!
-                end.location.distanceTo(home).meters shouldBeLessThan 3.0
-                vehicle.telemetry.landedState.value shouldBe LandedState.ON_GROUND
-                vehicle.telemetry.armed.value shouldBe false
-            } finally {
-                sim.stop()
-                gcs.close()
-            }
+        Flights.flying(SimVehicleConfig(systemId = 31, timeScale = 20.0)) { vehicle, _ ->
+            val home = SimVehicleConfig.DEFAULT_HOME
+            val mission = Flights.copterSurvey(home)
+            vehicle.mission.upload(mission)
+            val (reached, recording) = recordReached(vehicle)
+            Flights.keepArmedOnGround(vehicle)
+            vehicle.action.arm()
+            vehicle.action.startMission()
+            vehicle.action.awaitLanded(timeout = 60.seconds)
+            recording.cancel()
+            reached shouldBe (1..8).toList()
+            val end = vehicle.telemetry.position.value!!
+            end.location.distanceTo(home).meters shouldBeLessThan 3.0
+            vehicle.telemetry.landedState.value shouldBe LandedState.ON_GROUND
+            vehicle.telemetry.armed.value shouldBe false
         }
     }
 
     "an ArduPilot plane flies its circuit and lands through the landing sequence, disarmed on the runway" {
-        coroutineScope {
-            val gcs = GroundStation.open("udpin://127.0.0.1:0", this)
-            val sim = SimVehicle(SimVehicleConfig(systemId = 32, type = VehicleType.FIXED_WING, timeScale = 20.0, gcs = "udpout://127.0.0.1:${gcs.link.localPort}"))
-            try {
-                sim.start(this)
-                val vehicle = Flights.vehicle(gcs, 32)
-                val home = SimVehicleConfig.DEFAULT_HOME
-                vehicle.mission.upload(Flights.planeCircuit(home))
-                val (reached, recording) = recordReached(vehicle)
-                Flights.keepArmedOnGround(vehicle)
-                vehicle.action.arm()
-                vehicle.action.startMission()
-                // In the air it never flies slower than its minimum airspeed.
-                withTimeout(30.seconds) { vehicle.telemetry.landedState.first { it == LandedState.IN_AIR } }
-                vehicle.action.awaitLanded(timeout = 90.seconds)
-                recording.cancel()
-                reached shouldBe listOf(1, 2, 3, 4, 6, 7)
-                vehicle.telemetry.position.value!!.location.distanceTo(home).meters shouldBeLessThan 60.0
-            } finally {
-                sim.stop()
-                gcs.close()
-            }
+        Flights.flying(SimVehicleConfig(systemId = 32, type = VehicleType.FIXED_WING, timeScale = 20.0)) { vehicle, _ ->
+            val home = SimVehicleConfig.DEFAULT_HOME
+            vehicle.mission.upload(Flights.planeCircuit(home))
+            val (reached, recording) = recordReached(vehicle)
+            Flights.keepArmedOnGround(vehicle)
+            vehicle.action.arm()
+            vehicle.action.startMission()
+            // It gets airborne on its own takeoff item.
+            withTimeout(30.seconds) { vehicle.telemetry.landedState.first { it == LandedState.IN_AIR } }
+            vehicle.action.awaitLanded(timeout = 90.seconds)
+            recording.cancel()
+            reached shouldBe listOf(1, 2, 3, 4, 6, 7)
+            vehicle.telemetry.position.value!!.location.distanceTo(home).meters shouldBeLessThan 60.0
         }
     }
 
     "camera items in a mission are photographed where the vehicle is when it reaches them" {
-        coroutineScope {
-            val gcs = GroundStation.open("udpin://127.0.0.1:0", this)
-            val sim = SimVehicle(SimVehicleConfig(systemId = 34, autopilot = Autopilot.PX4, timeScale = 20.0, gcs = "udpout://127.0.0.1:${gcs.link.localPort}"))
-            try {
-                sim.start(this)
-                val vehicle = Flights.vehicle(gcs, 34)
-                val home = SimVehicleConfig.DEFAULT_HOME
-                val a = home.offset(30.m, 0.m)
-                val b = home.offset(30.m, 30.m)
-                val shoot = { seq: Int -> Flights.item(seq, Flights.DO_DIGICAM_CONTROL).copy(frame = 2, x = 1) }
-                vehicle.mission.upload(
-                    listOf(
-                        Flights.item(0, Flights.NAV_TAKEOFF, altitude = 15.0),
-                        Flights.item(1, Flights.NAV_WAYPOINT, a, 15.0), shoot(2),
-                        Flights.item(3, Flights.NAV_WAYPOINT, b, 15.0), shoot(4),
-                        Flights.item(5, Flights.NAV_RETURN_TO_LAUNCH),
-                    ),
-                )
-                Flights.keepArmedOnGround(vehicle)
-                vehicle.action.arm()
-                vehicle.action.startMission()
-                vehicle.action.awaitLanded(timeout = 60.seconds)
-                val photos = sim.photos.value
-                photos.map { it.missionSeq } shouldBe listOf(2, 4)
-                photos[0].location.distanceTo(a).meters shouldBeLessThan 11.0 // PX4's NAV_ACC_RAD is 10 m
-                photos[1].location.distanceTo(b).meters shouldBeLessThan 11.0
-            } finally {
-                sim.stop()
-                gcs.close()
-            }
+        Flights.flying(SimVehicleConfig(systemId = 34, autopilot = Autopilot.PX4, timeScale = 20.0)) { vehicle, sim ->
+            val home = SimVehicleConfig.DEFAULT_HOME
+            val a = home.offset(30.m, 0.m)
+            val b = home.offset(30.m, 30.m)
+            val shoot = { seq: Int -> Flights.item(seq, MavCommands.DO_DIGICAM_CONTROL).copy(frame = 2, x = 1) }
+            vehicle.mission.upload(
+                listOf(
+                    Flights.item(0, MavCommands.NAV_TAKEOFF, altitude = 15.0),
+                    Flights.item(1, MavCommands.NAV_WAYPOINT, a, 15.0), shoot(2),
+                    Flights.item(3, MavCommands.NAV_WAYPOINT, b, 15.0), shoot(4),
+                    Flights.item(5, MavCommands.NAV_RETURN_TO_LAUNCH),
+                ),
+            )
+            Flights.keepArmedOnGround(vehicle)
+            vehicle.action.arm()
+            vehicle.action.startMission()
+            vehicle.action.awaitLanded(timeout = 60.seconds)
+            val photos = sim.photos.value
+            photos.map { it.missionSeq } shouldBe listOf(2, 4)
+            photos[0].location.distanceTo(a).meters shouldBeLessThan 11.0 // PX4's NAV_ACC_RAD is 10 m
+            photos[1].location.distanceTo(b).meters shouldBeLessThan 11.0
         }
     }
 
     for (autopilot in listOf(Autopilot.ARDUPILOT, Autopilot.PX4)) {
         "a ${autopilot.name} copter paused mid-mission holds position and altitude, and continues at the same item" {
-            coroutineScope {
-                val gcs = GroundStation.open("udpin://127.0.0.1:0", this)
-                val sim = SimVehicle(SimVehicleConfig(systemId = 33, autopilot = autopilot, timeScale = 10.0, gcs = "udpout://127.0.0.1:${gcs.link.localPort}"))
-                try {
-                    sim.start(this)
-                    val vehicle = Flights.vehicle(gcs, 33)
-                    val home = SimVehicleConfig.DEFAULT_HOME
-                    vehicle.mission.upload(Flights.copterSurvey(home))
-                    Flights.keepArmedOnGround(vehicle)
+            Flights.flying(SimVehicleConfig(systemId = 33, autopilot = autopilot, timeScale = 10.0)) { vehicle, _ ->
+                val home = SimVehicleConfig.DEFAULT_HOME
+                vehicle.mission.upload(Flights.copterSurvey(home))
+                Flights.keepArmedOnGround(vehicle)
                 vehicle.action.arm()
-                    vehicle.action.startMission()
-                    withTimeout(60.seconds) { vehicle.telemetry.missionCurrent.first { it == 3 } }
-                    vehicle.action.pauseMission()
-                    // Every GLOBAL_POSITION_INT (4 Hz), not the StateFlow, which skips repeats of a vehicle standing still.
-                    val reports = vehicle.messages.mapNotNull { it.message as? GlobalPositionInt }.map { Location(it.lat() / 1e7, it.lon() / 1e7, (it.relativeAlt() / 1000.0).m) }
-                    val settled = withTimeout(30.seconds) {
-                        var last: Location? = null
-                        reports.first { p ->
-                            val previous = last
-                            last = p
-                            previous != null && previous.distanceTo(p).meters < 0.3
-                        }
+                vehicle.action.startMission()
+                withTimeout(60.seconds) { vehicle.telemetry.missionCurrent.first { it == 3 } }
+                vehicle.action.pauseMission()
+                // Every GLOBAL_POSITION_INT (4 Hz), not the StateFlow, which skips repeats of a vehicle standing still.
+                val reports = vehicle.messages.mapNotNull { it.message as? GlobalPositionInt }.map { Location(it.lat() / 1e7, it.lon() / 1e7, (it.relativeAlt() / 1000.0).m) }
+                val settled = withTimeout(30.seconds) {
+                    var last: Location? = null
+                    reports.first { p ->
+                        val previous = last
+                        last = p
+                        previous != null && previous.distanceTo(p).meters < 0.3
                     }
-                    val held = withTimeout(30.seconds) { reports.take(12).toList() }
-                    for (p in held) {
-                        p.distanceTo(settled).meters shouldBeLessThan 1.0
-                        abs(p.altitude.meters - settled.altitude.meters) shouldBeLessThan 0.5
-                    }
-                    vehicle.telemetry.missionCurrent.value shouldBe 3
-                    val (reached, recording) = recordReached(vehicle)
-                    vehicle.action.continueMission()
-                    withTimeout(60.seconds) { vehicle.telemetry.missionCurrent.first { it == 4 } }
-                    recording.cancel()
-                    reached.first() shouldBe 3
-                } finally {
-                    sim.stop()
-                    gcs.close()
                 }
+                val held = withTimeout(30.seconds) { reports.take(12).toList() }
+                for (p in held) {
+                    p.distanceTo(settled).meters shouldBeLessThan 1.0
+                    abs(p.altitude.meters - settled.altitude.meters) shouldBeLessThan 0.5
+                }
+                vehicle.telemetry.missionCurrent.value shouldBe 3
+                val (reached, recording) = recordReached(vehicle)
+                vehicle.action.continueMission()
+                withTimeout(60.seconds) { vehicle.telemetry.missionCurrent.first { it == 4 } }
+                recording.cancel()
+                reached.first() shouldBe 3
             }
         }
     }

@@ -11,7 +11,6 @@ public object MavlinkEnums {
     internal const val MAV_AUTOPILOT_ARDUPILOTMEGA = 3
     internal const val MAV_AUTOPILOT_PX4 = 12
     internal const val MAV_STATE_ACTIVE = 4
-    internal const val MAV_CMD_SET_MESSAGE_INTERVAL = 511
 
     /** MAV_TYPE numbers that are not vehicles even when an autopilot id is set. */
     private val notVehicles = setOf(

@@ -9,6 +9,10 @@ import io.dronefleet.mavlink.minimal.MavType
 import io.dronefleet.mavlink.util.EnumValue
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.shouldBe
+import java.net.InetSocketAddress
+import java.nio.ByteBuffer
+import java.nio.channels.DatagramChannel
+import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.first
@@ -17,10 +21,7 @@ import kotlinx.coroutines.withTimeout
 import pod.mavlink.codec.FrameDecoder
 import pod.mavlink.codec.FrameEncoder
 import pod.mavlink.codec.MessageCodec
-import java.net.InetSocketAddress
-import java.nio.ByteBuffer
-import java.nio.channels.DatagramChannel
-import kotlin.time.Duration.Companion.seconds
+import pod.mavlink.command.MavCommands
 
 /** A bare UDP "vehicle" for routing tests: sends what it is told, records the commands it receives. */
 private class RawVehicle(val systemId: Int, private val gcsPort: Int) : AutoCloseable {
@@ -45,7 +46,7 @@ private class RawVehicle(val systemId: Int, private val gcsPort: Int) : AutoClos
             val bytes = ByteArray(buffer.remaining()).also { buffer.get(it) }
             decoder.feed(bytes) { frame ->
                 val message = MessageCodec.Default.decode(frame)
-                if (message is CommandLong && message.command().value() != MavlinkEnums.MAV_CMD_SET_MESSAGE_INTERVAL) {
+                if (message is CommandLong && message.command().value() != MavCommands.SET_MESSAGE_INTERVAL) {
                     seen += message.command().value()
                 }
             }

@@ -6,50 +6,52 @@ import io.dronefleet.mavlink.common.ParamRequestList
 import io.dronefleet.mavlink.common.ParamRequestRead
 import io.dronefleet.mavlink.common.ParamSet
 import io.dronefleet.mavlink.common.SetMode
+import kotlin.math.roundToLong
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.nanoseconds
+import kotlin.time.Duration.Companion.seconds
+import kotlin.time.DurationUnit
+import kotlin.time.TimeSource
 import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.ExperimentalCoroutinesApi
 import kotlinx.coroutines.Job
 import kotlinx.coroutines.NonCancellable
-import kotlinx.coroutines.withContext
 import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.cancel
 import kotlinx.coroutines.channels.BufferOverflow
 import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.delay
+import kotlinx.coroutines.flow.MutableSharedFlow
 import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.SharedFlow
 import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.asSharedFlow
 import kotlinx.coroutines.flow.asStateFlow
 import kotlinx.coroutines.job
 import kotlinx.coroutines.launch
+import kotlinx.coroutines.withContext
 import pod.mavlink.MessageTargets
 import pod.mavlink.SequenceNumbers
+import pod.mavlink.codec.FrameDecoder
+import pod.mavlink.codec.FrameEncoder
 import pod.mavlink.codec.MavFrame
+import pod.mavlink.codec.MessageCodec
+import pod.mavlink.command.MavCommands.REQUEST_MESSAGE
+import pod.mavlink.command.MavCommands.SET_MESSAGE_INTERVAL
+import pod.mavlink.link.MavlinkLink
 import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionMessage
 import pod.mavlink.mission.MissionServer
 import pod.mavlink.mission.MissionServerFlavor
 import pod.mavlink.mission.MissionWire
-import pod.mavlink.codec.FrameDecoder
-import pod.mavlink.codec.FrameEncoder
-import pod.mavlink.codec.MessageCodec
-import pod.mavlink.link.MavlinkLink
 import pod.sim.autopilot.CommandRequest
 import pod.sim.autopilot.MavResult
 import pod.sim.autopilot.SimAutopilot
 import pod.sim.autopilot.SimOutput
-import kotlinx.coroutines.flow.SharedFlow
-import kotlinx.coroutines.flow.MutableSharedFlow
-import kotlinx.coroutines.flow.asSharedFlow
-import kotlin.time.DurationUnit
-import kotlin.time.Duration
-import kotlin.math.roundToLong
-import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.Duration.Companion.nanoseconds
-import kotlin.time.Duration.Companion.seconds
-import kotlin.time.TimeSource
 
 /**
  * A simulated MAVLink vehicle on its own UDP socket, sending to a ground station as SITL's
@@ -256,8 +258,8 @@ public class SimVehicle(
     /** Message-level commands are answered here; everything else is the autopilot's. */
     private suspend fun command(cmd: CommandRequest) {
         val result = when (cmd.command) {
-            MAV_CMD_SET_MESSAGE_INTERVAL -> setInterval(cmd.param1.toInt(), cmd.param2)
-            MAV_CMD_REQUEST_MESSAGE -> requestMessage(cmd.param1.toInt())
+            SET_MESSAGE_INTERVAL -> setInterval(cmd.param1.toInt(), cmd.param2)
+            REQUEST_MESSAGE -> requestMessage(cmd.param1.toInt())
             else -> return autopilot.commands.handle(cmd)
         }
         autopilot.emit(SimOutput.Ack(cmd.command, result, 0, cmd.sourceSystem, cmd.sourceComponent))
@@ -341,8 +343,6 @@ public class SimVehicle(
     }
 
     private companion object {
-        const val MAV_CMD_SET_MESSAGE_INTERVAL = 511
-        const val MAV_CMD_REQUEST_MESSAGE = 512
         val TICK = 20.milliseconds
         const val MAX_STEPS_PER_TICK = 2000
     }

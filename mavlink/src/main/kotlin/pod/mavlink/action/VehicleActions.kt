@@ -1,8 +1,11 @@
 package pod.mavlink.action
 
-import io.dronefleet.mavlink.common.SetMode
 import io.dronefleet.mavlink.common.MavMode
+import io.dronefleet.mavlink.common.SetMode
 import io.dronefleet.mavlink.util.EnumValue
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.minutes
+import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.combine
 import kotlinx.coroutines.flow.first
@@ -19,12 +22,24 @@ import pod.core.vehicle.VehicleType
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.command.CommandRejected
 import pod.mavlink.command.CommandResult
+import pod.mavlink.command.MavCommandParams.ARM_FORCE_MAGIC
+import pod.mavlink.command.MavCommandParams.MODE_FLAG_CUSTOM_MODE_ENABLED
+import pod.mavlink.command.MavCommandParams.REPOSITION_FLAG_CHANGE_MODE
+import pod.mavlink.command.MavCommands.COMPONENT_ARM_DISARM
+import pod.mavlink.command.MavCommands.DO_CHANGE_SPEED
+import pod.mavlink.command.MavCommands.DO_LAND_START
+import pod.mavlink.command.MavCommands.DO_PAUSE_CONTINUE
+import pod.mavlink.command.MavCommands.DO_REPOSITION
+import pod.mavlink.command.MavCommands.DO_SET_HOME
+import pod.mavlink.command.MavCommands.DO_SET_MODE
+import pod.mavlink.command.MavCommands.MISSION_START
+import pod.mavlink.command.MavCommands.NAV_LAND
+import pod.mavlink.command.MavCommands.NAV_RETURN_TO_LAUNCH
+import pod.mavlink.command.MavCommands.NAV_TAKEOFF
+import pod.mavlink.command.MavCommands.SET_MESSAGE_INTERVAL
 import pod.mavlink.command.VehicleCommand
 import pod.mavlink.telemetry.FlightModes
 import pod.mavlink.telemetry.ModeRole
-import kotlin.time.Duration
-import kotlin.time.Duration.Companion.minutes
-import kotlin.time.Duration.Companion.seconds
 
 /**
  * What a ground-station operator does to one vehicle, each step confirmed: the command's
@@ -44,13 +59,13 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
 
     /** Arms the motors ([force] skips the autopilot's pre-arm checks) and waits until telemetry shows it armed. */
     public suspend fun arm(force: Boolean = false) {
-        command(VehicleCommand(MAV_CMD_COMPONENT_ARM_DISARM, param1 = 1f, param2 = if (force) FORCE_MAGIC else 0f))
+        command(VehicleCommand(COMPONENT_ARM_DISARM, param1 = 1f, param2 = if (force) ARM_FORCE_MAGIC.toFloat() else 0f))
         confirm("arm", "armed", vehicle.telemetry.armed) { it }
     }
 
     /** Disarms the motors ([force] even in flight, which drops a multicopter) and waits until telemetry shows it. */
     public suspend fun disarm(force: Boolean = false) {
-        command(VehicleCommand(MAV_CMD_COMPONENT_ARM_DISARM, param1 = 0f, param2 = if (force) FORCE_MAGIC else 0f))
+        command(VehicleCommand(COMPONENT_ARM_DISARM, param1 = 0f, param2 = if (force) ARM_FORCE_MAGIC.toFloat() else 0f))
         confirm("disarm", "disarmed", vehicle.telemetry.armed) { !it }
     }
 
@@ -64,9 +79,9 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
             ?: throw UnknownMode(name, autopilot, type, FlightModes.names(autopilot, type))
         if (vehicle.telemetry.mode.value?.customMode == custom) return
         val command = if (autopilot == Autopilot.PX4) {
-            VehicleCommand(MAV_CMD_DO_SET_MODE, param1 = CUSTOM_MODE_ENABLED, param2 = ((custom shr 16) and 0xFF).toFloat(), param3 = ((custom shr 24) and 0xFF).toFloat())
+            VehicleCommand(DO_SET_MODE, param1 = MODE_FLAG_CUSTOM_MODE_ENABLED.toFloat(), param2 = ((custom shr 16) and 0xFF).toFloat(), param3 = ((custom shr 24) and 0xFF).toFloat())
         } else {
-            VehicleCommand(MAV_CMD_DO_SET_MODE, param1 = CUSTOM_MODE_ENABLED, param2 = custom.toFloat())
+            VehicleCommand(DO_SET_MODE, param1 = MODE_FLAG_CUSTOM_MODE_ENABLED.toFloat(), param2 = custom.toFloat())
         }
         try {
             command(command)
@@ -90,7 +105,7 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
         when {
             autopilot == Autopilot.PX4 -> {
                 val home = homeAltitude() ?: throw ActionUnsupported("takeoff", "home altitude unknown (no HOME_POSITION or GLOBAL_POSITION_INT yet)")
-                command(VehicleCommand(MAV_CMD_NAV_TAKEOFF, param4 = Float.NaN, param5 = Double.NaN, param6 = Double.NaN, param7 = (home + altitude.meters).toFloat()))
+                command(VehicleCommand(NAV_TAKEOFF, param4 = Float.NaN, param5 = Double.NaN, param6 = Double.NaN, param7 = (home + altitude.meters).toFloat()))
             }
             isPlane(type) -> {
                 vehicle.params.write("TKOFF_ALT", altitude.meters)
@@ -99,7 +114,7 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
             else -> {
                 setMode(role(ModeRole.GUIDED))
                 try {
-                    command(VehicleCommand(MAV_CMD_NAV_TAKEOFF, param7 = altitude.meters.toFloat()))
+                    command(VehicleCommand(NAV_TAKEOFF, param7 = altitude.meters.toFloat()))
                 } catch (e: CommandRejected) {
                     // A resend after a lost ack is refused by a copter already climbing: that is success.
                     if (e.attempts == 1 || !leavingGround()) throw e
@@ -120,17 +135,17 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
     public suspend fun land() {
         val (autopilot, type) = airframe()
         if (autopilot != Autopilot.PX4 && isPlane(type)) {
-            command(VehicleCommand(MAV_CMD_DO_LAND_START))
+            command(VehicleCommand(DO_LAND_START))
             confirmMode("land", ModeRole.MISSION)
         } else {
-            command(VehicleCommand(MAV_CMD_NAV_LAND, param4 = Float.NaN, param5 = Double.NaN, param6 = Double.NaN))
+            command(VehicleCommand(NAV_LAND, param4 = Float.NaN, param5 = Double.NaN, param6 = Double.NaN))
             confirmMode("land", ModeRole.LAND)
         }
     }
 
     /** Returns to launch (NAV_RETURN_TO_LAUNCH), confirmed by the return mode. */
     public suspend fun returnToLaunch() {
-        command(VehicleCommand(MAV_CMD_NAV_RETURN_TO_LAUNCH))
+        command(VehicleCommand(NAV_RETURN_TO_LAUNCH))
         confirmMode("return to launch", ModeRole.RETURN)
     }
 
@@ -144,9 +159,9 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
         if (airframe().first != Autopilot.PX4) setMode(guided)
         command(
             VehicleCommand(
-                MAV_CMD_DO_REPOSITION,
+                DO_REPOSITION,
                 param1 = speed?.metersPerSecond?.toFloat() ?: -1f,
-                param2 = REPOSITION_CHANGE_MODE,
+                param2 = REPOSITION_FLAG_CHANGE_MODE.toFloat(),
                 param4 = Float.NaN,
                 param5 = target.latitude, param6 = target.longitude, param7 = target.altitude.meters.toFloat(),
                 frame = MAV_FRAME_GLOBAL,
@@ -167,7 +182,7 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
      */
     public suspend fun pauseMission() {
         try {
-            command(VehicleCommand(MAV_CMD_DO_PAUSE_CONTINUE, param1 = 0f))
+            command(VehicleCommand(DO_PAUSE_CONTINUE, param1 = 0f))
             pausedByCommand = true
         } catch (e: CommandRejected) {
             when {
@@ -187,7 +202,7 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
         val mission = role(ModeRole.MISSION)
         val inMission = vehicle.telemetry.mode.value?.name == mission
         if (pausedByCommand == true || (pausedByCommand == null && inMission)) {
-            command(VehicleCommand(MAV_CMD_DO_PAUSE_CONTINUE, param1 = 1f))
+            command(VehicleCommand(DO_PAUSE_CONTINUE, param1 = 1f))
         } else {
             setMode(mission)
         }
@@ -204,23 +219,23 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
         require(first == null || first >= 0) { "first must be ≥ 0, was $first" }
         val px4 = airframe().first == Autopilot.PX4
         if (first != null && !px4) vehicle.mission.setCurrent(first)
-        command(VehicleCommand(MAV_CMD_MISSION_START, param1 = if (px4 && first != null) first.toFloat() else 0f))
+        command(VehicleCommand(MISSION_START, param1 = if (px4 && first != null) first.toFloat() else 0f))
         confirmMode("start mission", ModeRole.MISSION)
     }
 
     /** Sets the [kind] speed (DO_CHANGE_SPEED) for the current flight and mission. */
     public suspend fun setSpeed(speed: Speed, kind: SpeedKind = SpeedKind.GROUND) {
         require(speed.metersPerSecond > 0 && speed.metersPerSecond <= 100) { "speed must be in (0, 100] m/s, was $speed" }
-        command(VehicleCommand(MAV_CMD_DO_CHANGE_SPEED, param1 = kind.mavValue.toFloat(), param2 = speed.metersPerSecond.toFloat(), param3 = -1f))
+        command(VehicleCommand(DO_CHANGE_SPEED, param1 = kind.mavValue.toFloat(), param2 = speed.metersPerSecond.toFloat(), param3 = -1f))
     }
 
     /** Sets home to [location] (altitude above sea level), or to where the vehicle is when null. */
     public suspend fun setHome(location: Location? = null) {
         command(
             if (location == null) {
-                VehicleCommand(MAV_CMD_DO_SET_HOME, param1 = 1f)
+                VehicleCommand(DO_SET_HOME, param1 = 1f)
             } else {
-                VehicleCommand(MAV_CMD_DO_SET_HOME, param5 = location.latitude, param6 = location.longitude, param7 = location.altitude.meters.toFloat(), frame = MAV_FRAME_GLOBAL)
+                VehicleCommand(DO_SET_HOME, param5 = location.latitude, param6 = location.longitude, param7 = location.altitude.meters.toFloat(), frame = MAV_FRAME_GLOBAL)
             },
         )
     }
@@ -230,7 +245,7 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
         require(messageId in 0..0xFFFFFF) { "messageId must be in 0..16777215, was $messageId" }
         require(interval == null || interval.isPositive()) { "interval must be > 0, was $interval" }
         val micros = interval?.inWholeMicroseconds?.toFloat() ?: -1f
-        command(VehicleCommand(MAV_CMD_SET_MESSAGE_INTERVAL, param1 = messageId.toFloat(), param2 = micros))
+        command(VehicleCommand(SET_MESSAGE_INTERVAL, param1 = messageId.toFloat(), param2 = micros))
     }
 
     /** Waits until the vehicle reports itself on the ground and disarmed. */
@@ -295,25 +310,7 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
     }
 
     private companion object {
-        const val MAV_CMD_NAV_RETURN_TO_LAUNCH = 20
-        const val MAV_CMD_NAV_LAND = 21
-        const val MAV_CMD_NAV_TAKEOFF = 22
-        const val MAV_CMD_DO_SET_MODE = 176
-        const val MAV_CMD_DO_CHANGE_SPEED = 178
-        const val MAV_CMD_DO_SET_HOME = 179
-        const val MAV_CMD_DO_LAND_START = 189
-        const val MAV_CMD_DO_REPOSITION = 192
-        const val MAV_CMD_DO_PAUSE_CONTINUE = 193
-        const val MAV_CMD_MISSION_START = 300
-        const val MAV_CMD_COMPONENT_ARM_DISARM = 400
-        const val MAV_CMD_SET_MESSAGE_INTERVAL = 511
-
         /** MAV_FRAME_GLOBAL_INT: altitude above mean sea level, lat/lon as degrees × 10⁷. */
         const val MAV_FRAME_GLOBAL = 5
-        const val CUSTOM_MODE_ENABLED = 1f
-        /** MAV_DO_REPOSITION_FLAGS_CHANGE_MODE. */
-        const val REPOSITION_CHANGE_MODE = 1f
-        /** param2 of COMPONENT_ARM_DISARM that overrides checks (ArduPilot and PX4). */
-        const val FORCE_MAGIC = 21196f
     }
 }

@@ -41,13 +41,10 @@ public data class VehicleCommand(
 
 /** Names for the MAV_CMD numbers Pod sends, for error messages and logs. */
 internal object CommandNames {
-    private val names = mapOf(
-        16 to "NAV_WAYPOINT", 20 to "NAV_RETURN_TO_LAUNCH", 21 to "NAV_LAND", 22 to "NAV_TAKEOFF",
-        176 to "DO_SET_MODE", 178 to "DO_CHANGE_SPEED", 179 to "DO_SET_HOME", 189 to "DO_LAND_START",
-        192 to "DO_REPOSITION", 193 to "DO_PAUSE_CONTINUE", 241 to "PREFLIGHT_CALIBRATION",
-        300 to "MISSION_START", 400 to "COMPONENT_ARM_DISARM", 511 to "SET_MESSAGE_INTERVAL",
-        512 to "REQUEST_MESSAGE",
-    )
+    // Every `const val` of MavCommands is a static int field named as the command.
+    private val names: Map<Int, String> = MavCommands::class.java.declaredFields
+        .filter { it.type == Int::class.javaPrimitiveType }
+        .associate { it.getInt(null) to it.name }
 
     fun of(command: Int): String = names[command]?.let { "MAV_CMD_$it" } ?: "MAV_CMD $command"
 }

@@ -4,6 +4,7 @@ import io.dronefleet.mavlink.common.CommandLong
 import io.dronefleet.mavlink.minimal.Heartbeat
 import io.dronefleet.mavlink.minimal.MavState
 import io.dronefleet.mavlink.util.EnumValue
+import kotlin.time.Duration.Companion.milliseconds
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Job
 import kotlinx.coroutines.delay
@@ -16,7 +17,6 @@ import pod.mavlink.codec.FrameDecoder
 import pod.mavlink.codec.FrameEncoder
 import pod.mavlink.codec.MessageCodec
 import pod.mavlink.link.MavlinkLink
-import kotlin.time.Duration.Companion.milliseconds
 
 /**
  * A vehicle on a real loopback socket whose answers a test scripts: for every message the ground
@@ -53,7 +53,7 @@ class ScriptedVehicle private constructor(
             link.receive { _, bytes ->
                 decoder.feed(bytes) { frame ->
                     val message = MessageCodec.Default.decode(frame) ?: return@feed
-                    if (message is CommandLong && message.command().value() == MavlinkEnums.MAV_CMD_SET_MESSAGE_INTERVAL) return@feed
+                    if (message is CommandLong && message.command().value() == MavCommands.SET_MESSAGE_INTERVAL) return@feed
                     if (message is Heartbeat) return@feed
                     if (message is CommandLong) commands.update { it + (message.command().value() to message.confirmation()) }
                     inbox.trySend(message)

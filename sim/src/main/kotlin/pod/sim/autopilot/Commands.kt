@@ -2,6 +2,23 @@ package pod.sim.autopilot
 
 import pod.core.units.Location
 import pod.core.units.m
+import pod.mavlink.command.MavCommandParams.ARM_FORCE_MAGIC
+import pod.mavlink.command.MavCommandParams.MODE_FLAG_CUSTOM_MODE_ENABLED
+import pod.mavlink.command.MavCommandParams.REPOSITION_FLAG_CHANGE_MODE
+import pod.mavlink.command.MavCommands.COMPONENT_ARM_DISARM
+import pod.mavlink.command.MavCommands.DO_CHANGE_SPEED
+import pod.mavlink.command.MavCommands.DO_LAND_START
+import pod.mavlink.command.MavCommands.DO_PAUSE_CONTINUE
+import pod.mavlink.command.MavCommands.DO_REPOSITION
+import pod.mavlink.command.MavCommands.DO_SET_HOME
+import pod.mavlink.command.MavCommands.DO_SET_MISSION_CURRENT
+import pod.mavlink.command.MavCommands.DO_SET_MODE
+import pod.mavlink.command.MavCommands.MISSION_START
+import pod.mavlink.command.MavCommands.NAV_LAND
+import pod.mavlink.command.MavCommands.NAV_LOITER_UNLIM
+import pod.mavlink.command.MavCommands.NAV_RETURN_TO_LAUNCH
+import pod.mavlink.command.MavCommands.NAV_TAKEOFF
+import pod.mavlink.command.MavCommands.PREFLIGHT_CALIBRATION
 import pod.mavlink.telemetry.FlightModes
 import pod.sim.autopilot.MavResult.ACCEPTED
 import pod.sim.autopilot.MavResult.DENIED
@@ -24,7 +41,7 @@ internal class Commands(private val ap: SimAutopilot) {
     /** Handles [cmd]; its ACK (and any STATUSTEXT) is queued on the autopilot. */
     fun handle(cmd: CommandRequest) {
         val result = when (cmd.command) {
-            ARM_DISARM -> armDisarm(cmd)
+            COMPONENT_ARM_DISARM -> armDisarm(cmd)
             DO_SET_MODE -> setMode(cmd.param1.toInt(), if (ap.isPx4) px4Mode(cmd.param2.toInt(), cmd.param3.toInt()) else cmd.param2.toLong())
             NAV_TAKEOFF -> takeoff(cmd)
             NAV_LAND -> land()
@@ -70,7 +87,7 @@ internal class Commands(private val ap: SimAutopilot) {
     private fun refuse(text: String, severity: Int = Severity.CRITICAL) = ap.text(severity, text)
 
     private fun armDisarm(cmd: CommandRequest): Int {
-        val forced = cmd.param2.toInt() == FORCE_MAGIC
+        val forced = cmd.param2.toInt() == ARM_FORCE_MAGIC
         return when (cmd.param1.toInt()) {
             1 -> when {
                 ap.armed -> ACCEPTED
@@ -115,7 +132,7 @@ internal class Commands(private val ap: SimAutopilot) {
     private fun px4Mode(main: Int, sub: Int): Long = (main.toLong() shl 16) or (sub.toLong() shl 24)
 
     private fun setMode(baseMode: Int, customMode: Long): Int {
-        if (baseMode and CUSTOM_MODE_ENABLED == 0) return if (ap.isPx4) TEMPORARILY_REJECTED else UNSUPPORTED
+        if (baseMode and MODE_FLAG_CUSTOM_MODE_ENABLED == 0) return if (ap.isPx4) TEMPORARILY_REJECTED else UNSUPPORTED
         val name = FlightModes.decode(ap.autopilot, ap.type, customMode).name
         if (name.startsWith("MODE(") || (ap.isPx4 && name == "AUTO")) {
             if (ap.isPx4) refuse("Unsupported mode")
@@ -181,7 +198,7 @@ internal class Commands(private val ap: SimAutopilot) {
 
     private fun reposition(cmd: CommandRequest): Int {
         if (!ap.isPx4 && !cmd.isInt) return UNSUPPORTED // ArduPilot takes DO_REPOSITION only as COMMAND_INT
-        val changeMode = cmd.param2.toInt() and REPOSITION_CHANGE_MODE != 0
+        val changeMode = cmd.param2.toInt() and REPOSITION_FLAG_CHANGE_MODE != 0
         val guided = if (ap.isPx4) "AUTO.LOITER" else "GUIDED"
         if (!ap.isPx4 && ap.modeName != guided && !changeMode) return DENIED
         val frame = cmd.frame ?: FRAME_GLOBAL
@@ -278,23 +295,6 @@ internal class Commands(private val ap: SimAutopilot) {
 
     companion object {
         const val SET_MODE_MESSAGE = 11
-        const val NAV_LOITER_UNLIM = 17
-        const val NAV_RETURN_TO_LAUNCH = 20
-        const val NAV_LAND = 21
-        const val NAV_TAKEOFF = 22
-        const val DO_SET_MODE = 176
-        const val DO_CHANGE_SPEED = 178
-        const val DO_SET_HOME = 179
-        const val DO_LAND_START = 189
-        const val DO_REPOSITION = 192
-        const val DO_PAUSE_CONTINUE = 193
-        const val DO_SET_MISSION_CURRENT = 224
-        const val PREFLIGHT_CALIBRATION = 241
-        const val MISSION_START = 300
-        const val ARM_DISARM = 400
-        const val FORCE_MAGIC = 21196
-        const val CUSTOM_MODE_ENABLED = 1
-        const val REPOSITION_CHANGE_MODE = 1
         const val FRAME_GLOBAL = 0
         const val FRAME_GLOBAL_RELATIVE_ALT = 3
         const val FRAME_GLOBAL_INT = 5

@@ -1,14 +1,35 @@
 package pod.sim.autopilot
 
+import kotlin.math.abs
+import kotlin.math.atan2
 import pod.core.units.Location
 import pod.core.units.m
+import pod.mavlink.command.MavCommands.CONDITION_DELAY
+import pod.mavlink.command.MavCommands.CONDITION_YAW
+import pod.mavlink.command.MavCommands.DO_CHANGE_SPEED
+import pod.mavlink.command.MavCommands.DO_DIGICAM_CONTROL
+import pod.mavlink.command.MavCommands.DO_JUMP
+import pod.mavlink.command.MavCommands.DO_LAND_START
+import pod.mavlink.command.MavCommands.DO_SET_CAM_TRIGG_DIST
+import pod.mavlink.command.MavCommands.DO_SET_HOME
+import pod.mavlink.command.MavCommands.IMAGE_START_CAPTURE
+import pod.mavlink.command.MavCommands.IMAGE_STOP_CAPTURE
+import pod.mavlink.command.MavCommands.NAV_LAND
+import pod.mavlink.command.MavCommands.NAV_LOITER_TIME
+import pod.mavlink.command.MavCommands.NAV_LOITER_TO_ALT
+import pod.mavlink.command.MavCommands.NAV_LOITER_TURNS
+import pod.mavlink.command.MavCommands.NAV_LOITER_UNLIM
+import pod.mavlink.command.MavCommands.NAV_RETURN_TO_LAUNCH
+import pod.mavlink.command.MavCommands.NAV_SPLINE_WAYPOINT
+import pod.mavlink.command.MavCommands.NAV_TAKEOFF
+import pod.mavlink.command.MavCommands.NAV_VTOL_LAND
+import pod.mavlink.command.MavCommands.NAV_VTOL_TAKEOFF
+import pod.mavlink.command.MavCommands.NAV_WAYPOINT
 import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionType
 import pod.sim.flight.Guidance
 import pod.sim.flight.horizontalDistance
 import pod.sim.flight.northEast
-import kotlin.math.abs
-import kotlin.math.atan2
 
 /**
  * Flies the MISSION list in AUTO: NAV items in order (with DO_JUMP), DO and CONDITION items as
@@ -311,27 +332,6 @@ internal class MissionRunner(private val ap: SimAutopilot) {
     }
 
     companion object {
-        const val NAV_WAYPOINT = 16
-        const val NAV_LOITER_UNLIM = 17
-        const val NAV_LOITER_TURNS = 18
-        const val NAV_LOITER_TIME = 19
-        const val NAV_RETURN_TO_LAUNCH = 20
-        const val NAV_LAND = 21
-        const val NAV_TAKEOFF = 22
-        const val NAV_LOITER_TO_ALT = 31
-        const val NAV_SPLINE_WAYPOINT = 82
-        const val NAV_VTOL_TAKEOFF = 84
-        const val NAV_VTOL_LAND = 85
-        const val CONDITION_DELAY = 112
-        const val CONDITION_YAW = 115
-        const val DO_JUMP = 177
-        const val DO_CHANGE_SPEED = 178
-        const val DO_SET_HOME = 179
-        const val DO_LAND_START = 189
-        const val DO_DIGICAM_CONTROL = 203
-        const val DO_SET_CAM_TRIGG_DIST = 206
-        const val IMAGE_START_CAPTURE = 2000
-        const val IMAGE_STOP_CAPTURE = 2001
         val NAV = setOf(
             NAV_WAYPOINT, NAV_LOITER_UNLIM, NAV_LOITER_TURNS, NAV_LOITER_TIME, NAV_RETURN_TO_LAUNCH, NAV_LAND, NAV_TAKEOFF,
             NAV_LOITER_TO_ALT, NAV_SPLINE_WAYPOINT, NAV_VTOL_TAKEOFF, NAV_VTOL_LAND,
