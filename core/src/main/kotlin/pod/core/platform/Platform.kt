@@ -1,0 +1,62 @@
+package pod.core.platform
+
+import kotlinx.coroutines.flow.StateFlow
+import pod.core.mission.Mission
+
+/**
+ * What the engine needs from a fleet: the vehicles it can use and a way to fly a mission on one.
+ *
+ * The MAVLink module implements it over a ground station (real or simulated vehicles); core's
+ * tests implement it with a fake fleet in virtual time. The engine guarantees that it never asks
+ * for two missions on one vehicle at once, and that a mission cancelled mid-flight is followed by
+ * [makeSafe] before the cancelled task returns.
+ */
+public interface Platform {
+    /** The vehicles currently known, in a stable order. Vehicles are added as they are discovered. */
+    public val vehicles: StateFlow<List<PlatformVehicle>>
+
+    /**
+     * How many times faster than the wall clock the vehicles' world runs (a simulator's time scale);
+     * program durations (`idle`, `during`, pick timeouts) are divided by it. 1 for real vehicles.
+     */
+    public val timeScale: Double get() = 1.0
+
+    /**
+     * Flies [mission] on [vehicle] and returns when it is complete as [Mission.completion] defines.
+     * Reports what happens through [report]. Throws a typed exception when the vehicle refuses,
+     * fails or is lost ([pod.core.vehicle.VehicleLost]). When the caller is cancelled this returns
+     * promptly (with the CancellationException) without making the vehicle safe: the engine calls
+     * [makeSafe] next.
+     */
+    public suspend fun fly(vehicle: PlatformVehicle, mission: Mission, report: suspend (MissionEvent) -> Unit)
+
+    /** Puts [vehicle] in [state] (hold where it is, or return home) and returns once it is confirmed. */
+    public suspend fun makeSafe(vehicle: PlatformVehicle, state: SafeState)
+}
+
+/** What a vehicle does when the task flying it is cancelled. */
+public enum class SafeState {
+    /** Stop and hold position (loiter for planes). */
+    HOLD,
+
+    /** Return to launch (multirotors land there). */
+    RETURN_HOME,
+}
+
+/** Something that happened while a vehicle flew a mission. */
+public sealed interface MissionEvent {
+    /** The mission is on board the vehicle ([steps] mission steps). */
+    public data class Uploaded(val steps: Int) : MissionEvent
+
+    /** The vehicle started flying it. */
+    public data object Started : MissionEvent
+
+    /** The vehicle began mission step [step] (an index into [Mission.steps]). */
+    public data class StepStarted(val step: Int) : MissionEvent
+
+    /** The vehicle finished mission step [step]. */
+    public data class StepDone(val step: Int) : MissionEvent
+
+    /** The mission is complete. */
+    public data object Completed : MissionEvent
+}
