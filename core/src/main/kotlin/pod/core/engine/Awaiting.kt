@@ -1,0 +1,35 @@
+package pod.core.engine
+
+import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.filter
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.flow.merge
+
+/** A [ConditionScope] that remembers every flow it read and the value it saw. */
+internal class TrackingScope : ConditionScope {
+    val seen = LinkedHashMap<StateFlow<*>, Any?>()
+
+    override fun <T> read(flow: StateFlow<T>): T {
+        val value = flow.value
+        if (flow !in seen) seen[flow] = value
+        return value
+    }
+}
+
+/**
+ * Evaluates [compute] until it returns a value, sleeping in between until one of the flows it read
+ * changes (or, when it read none, until [fallback] changes). The first evaluation happens at once.
+ */
+internal suspend fun <T : Any> awaitValue(fallback: StateFlow<*>, compute: ConditionScope.() -> T?): T {
+    while (true) {
+        val scope = TrackingScope()
+        scope.compute()?.let { return it }
+        if (scope.seen.isEmpty()) scope.read(fallback)
+        merge(*scope.seen.map { (flow, value) -> flow.filter { it != value } }.toTypedArray()).first()
+    }
+}
+
+/** Suspends until [condition] holds. */
+internal suspend fun awaitCondition(fallback: StateFlow<*>, condition: Condition) {
+    awaitValue(fallback) { if (with(condition) { holds() }) Unit else null }
+}

@@ -1,0 +1,116 @@
+package pod.core.engine
+
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.asStateFlow
+import kotlinx.coroutines.flow.update
+import kotlinx.coroutines.withTimeoutOrNull
+import pod.core.platform.Platform
+import pod.core.platform.PlatformVehicle
+import pod.core.platform.SafeState
+import pod.core.vehicle.Position
+import kotlin.time.Duration
+
+/**
+ * A running program: what its code can do. Loops and variables are plain Kotlin; tasks run with
+ * [execute], vehicles come from [pick] and go back with [release]. Created by [Engine.run].
+ */
+public class Program internal constructor(
+    /** The engine running this program. */
+    public val engine: Engine,
+) {
+    private val _picked = MutableStateFlow<Set<Int>>(emptySet())
+    private val runner = TaskRunner(engine, this)
+
+    /** The fleet. */
+    public val platform: Platform get() = engine.platform
+
+    /** Ids of the vehicles this program holds (picked and not yet released). */
+    public val picked: StateFlow<Set<Int>> = _picked.asStateFlow()
+
+    /** How long a vehicle may go unheard during a task before the task fails with VehicleLost (Dolphin `setConnectionTimeout`). */
+    public var connectionTimeout: Duration = engine.config.connectionTimeout
+
+    /** What a vehicle does when its task is cancelled, for tasks that do not say. */
+    public var safeState: SafeState = engine.config.safeState
+
+    /** Every vehicle the platform knows now. */
+    public val vehicles: VehicleSet get() = VehicleSet(platform.vehicles.value)
+
+    /** Runs [task] and returns when it is done; throws what it failed with. */
+    public suspend fun execute(task: Task) {
+        runner.run(task, vehicles = null, parent = 0)
+    }
+
+    /**
+     * Waits until [request.count][PickRequest.count] free vehicles meet [request] and takes them for
+     * this program; throws [PickTimeout] naming the request when its timeout passes first.
+     */
+    public suspend fun pick(request: PickRequest): VehicleSet {
+        val taken = withTimeoutOrNull(engine.wall(request.timeout)) {
+            while (true) {
+                val candidates = awaitValue(engine.revision) { candidates(request).takeIf { it.size >= request.count }?.take(request.count) }
+                if (take(candidates.map { it.id })) return@withTimeoutOrNull VehicleSet(candidates)
+            }
+            @Suppress("UNREACHABLE_CODE")
+            null
+        } ?: throw PickTimeout(request, candidates(request).size, request.timeout)
+        engine.emit(EngineEvent.Picked(engine.now(), taken.ids.toList()))
+        return taken
+    }
+
+    /** Gives [vehicles] back; they must have been picked by this program. */
+    public fun release(vehicles: Iterable<PlatformVehicle>) {
+        val ids = vehicles.mapTo(LinkedHashSet()) { it.id }
+        val missing = ids - _picked.value
+        if (missing.isNotEmpty()) throw NotPicked(missing)
+        _picked.update { it - ids }
+        engine.pickedByAny.update { it - ids }
+        engine.emit(EngineEvent.Released(engine.now(), ids.toList()))
+    }
+
+    /** Gives [vehicle] back. */
+    public fun release(vehicle: PlatformVehicle): Unit = release(listOf(vehicle))
+
+    /** Publishes [text] as a [EngineEvent.Message] (Dolphin `message`). */
+    public fun message(text: String) {
+        engine.emit(EngineEvent.Message(engine.now(), text))
+    }
+
+    /** Remaining battery of [vehicle], 0..1 (1 when it reports none yet). */
+    public fun battery(vehicle: PlatformVehicle): Double = vehicle.battery.value?.remaining ?: 1.0
+
+    /** Where [vehicle] is, or null before its first report. */
+    public fun position(vehicle: PlatformVehicle): Position? = vehicle.position.value
+
+    /** Suspends until [condition] holds (evaluated again only when what it reads changes). */
+    public suspend fun await(condition: Condition) {
+        awaitCondition(engine.revision, condition)
+    }
+
+    internal fun releaseAll() {
+        val held = _picked.value
+        if (held.isEmpty()) return
+        _picked.value = emptySet()
+        engine.pickedByAny.update { it - held }
+        engine.emit(EngineEvent.Released(engine.now(), held.toList()))
+    }
+
+    private fun ConditionScope.candidates(request: PickRequest): List<PlatformVehicle> {
+        val taken = read(engine.pickedByAny)
+        val busy = read(engine.busy)
+        return read(platform.vehicles).filter { it.id !in taken && it.id !in busy && request.accepts(it, this) }
+    }
+
+    private fun candidates(request: PickRequest): List<PlatformVehicle> = TrackingScope().candidates(request)
+
+    private fun take(ids: List<Int>): Boolean {
+        var ok = false
+        engine.pickedByAny.update { held ->
+            ok = ids.none { it in held } && ids.none { it in engine.busy.value }
+            if (ok) held + ids else held
+        }
+        if (ok) _picked.update { it + ids }
+        return ok
+    }
+}
