@@ -24,6 +24,9 @@ public sealed interface EngineEvent {
     /** A task was cancelled (its condition fired, its deadline passed, a sibling failed, the program stopped). */
     public data class TaskCancelled(override val at: Duration, val id: Int, val label: String) : EngineEvent
 
+    /** Task [task] starts flying [mission] on [vehicle]. */
+    public data class Flying(override val at: Duration, val task: Int, val vehicle: Int, val mission: pod.core.mission.Mission) : EngineEvent
+
     /** What a vehicle reported while task [task] flew it. */
     public data class Mission(override val at: Duration, val task: Int, val vehicle: Int, val event: MissionEvent) : EngineEvent
 

@@ -97,6 +97,7 @@ internal class TaskRunner(private val engine: Engine, private val program: Progr
     private suspend fun flyOne(task: Task.Fly, vehicle: PlatformVehicle, id: Int) {
         engine.claim(vehicle.id, task.label)
         val safe = task.onCancel ?: program.safeState
+        engine.emit(EngineEvent.Flying(engine.now(), id, vehicle.id, task.mission))
         try {
             coroutineScope {
                 val watchdog = launch { awaitLost(vehicle, task) }

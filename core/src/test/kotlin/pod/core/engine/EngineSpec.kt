@@ -269,7 +269,7 @@ class EngineSpec : FunSpec({
             }
             shape shouldContainExactly listOf(
                 "start sequence", "start a on [fake-1]", "start a",
-                "Uploaded", "Started", "StepStarted", "StepDone", "Completed",
+                "Flying", "Uploaded", "Started", "StepStarted", "StepDone", "Completed",
                 "done a", "done a on [fake-1]", "done sequence",
             )
             (events.last().at) shouldBe 10.seconds

@@ -1,0 +1,41 @@
+package pod.samples
+
+import pod.core.engine.EngineEvent
+import pod.core.platform.MissionEvent
+import kotlin.time.Duration
+
+/** Engine events as one line each, for people: "  03:12  copter-2  step 4 of 19 done". */
+class EventLines(private val names: (Int) -> String) {
+    /** The line for [event], or null for events too fine to print (task starts of plain composites). */
+    fun line(event: EngineEvent): String? {
+        val text = when (event) {
+            is EngineEvent.TaskStarted -> if (event.label.startsWith("slot") || event.label.contains(" on [")) "start  ${event.label}" else null
+            is EngineEvent.TaskCompleted -> if (event.label.contains(" on [")) "done   ${event.label}" else null
+            is EngineEvent.TaskFailed -> "FAILED ${event.label}: ${event.error.message}"
+            is EngineEvent.TaskCancelled -> if (event.label.contains(" on [")) "cancel ${event.label}" else null
+            is EngineEvent.Flying -> "${names(event.vehicle)} flies '${event.mission.name}' (${event.mission.steps.size} steps)"
+            is EngineEvent.Mission -> mission(names(event.vehicle), event.event)
+            is EngineEvent.MadeSafe -> "${names(event.vehicle)} made safe: ${event.state}${if (event.confirmed) "" else " (not confirmed)"}"
+            is EngineEvent.Picked -> "picked ${event.vehicles.joinToString { names(it) }}"
+            is EngineEvent.Released -> "released ${event.vehicles.joinToString { names(it) }}"
+            is EngineEvent.Message -> "» ${event.text}"
+        } ?: return null
+        return "${clock(event.at)}  $text"
+    }
+
+    private fun mission(name: String, event: MissionEvent): String? = when (event) {
+        is MissionEvent.Uploaded -> "$name mission on board (${event.steps} steps)"
+        MissionEvent.Started -> "$name started"
+        is MissionEvent.StepStarted -> null
+        is MissionEvent.StepDone -> "$name step ${event.step + 1} done"
+        MissionEvent.Completed -> "$name mission complete"
+    }
+
+    companion object {
+        /** mm:ss of vehicle time. */
+        fun clock(at: Duration): String {
+            val s = at.inWholeSeconds
+            return "%02d:%02d".format(s / 60, s % 60)
+        }
+    }
+}

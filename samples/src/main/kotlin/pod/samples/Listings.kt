@@ -1,0 +1,140 @@
+package pod.samples
+
+import pod.core.engine.Program
+import pod.core.engine.VehicleSet
+import pod.core.mission.Mission
+import pod.core.platform.PlatformVehicle
+import pod.core.units.Distance
+import pod.core.units.Location
+import pod.core.units.m
+import pod.core.vehicle.LandedState
+import pod.dsl.and
+import pod.dsl.concurrently
+import pod.dsl.during
+import pod.dsl.mission
+import pod.dsl.on
+import pod.dsl.pick
+import pod.dsl.then
+import pod.dsl.until
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.minutes
+
+/*
+ * The Dolphin report's listings, written with Pod's DSL. Each is a program: a suspend function on
+ * Program, so it runs on any platform — simulated vehicles (see Main.kt and `./pod demo`), real
+ * ones over MAVLink, or core's fake fleet.
+ */
+
+/** Where a vehicle took off, falling back to where it is. */
+internal fun homeOf(v: PlatformVehicle): Location {
+    val at = v.home.value ?: v.position.value?.location ?: error("${v.name} has reported neither home nor position")
+    return Location(at.latitude, at.longitude) // mission heights are above home
+}
+
+/** True unless [v] reports being on the ground. */
+internal fun isOut(v: PlatformVehicle): Boolean = v.landedState.value != LandedState.ON_GROUND
+
+/** A lawn-mower survey of a [length] × [width] rectangle whose south-west corner is [north]/[east] of [v]'s home. */
+internal fun surveyOf(v: PlatformVehicle, north: Distance, east: Distance, length: Distance = 120.m, width: Distance = 80.m, height: Distance = 30.m): Mission {
+    val home = homeOf(v)
+    return mission("survey ${v.name}") {
+        home(home)
+        takeOff(height)
+        moveFromHome(north, east, height)
+        surveyArea(length, width, spacing = 20.m)
+        returnHomeAndLand()
+    }
+}
+
+/** Back to launch and land. */
+internal fun landAtHome(v: PlatformVehicle): Mission {
+    val home = homeOf(v)
+    return mission("land ${v.name}") {
+        home(home)
+        goPos(home.latitude, home.longitude, 30.m)
+        returnHomeAndLand()
+    }
+}
+
+/**
+ * Listing 1, with drones: pick three vehicles with cameras and survey three neighbouring areas
+ * at once; release them when all three are back.
+ */
+suspend fun Program.listing1(): VehicleSet {
+    val vehicles = pick { count(3); payload("camera") }
+    message("listing 1: ${vehicles.joinToString { it.name }} survey three areas at once")
+    execute(concurrently(vehicles.mapIndexed { i, v -> surveyOf(v, north = 40.m, east = (i * 100).m) on v }))
+    release(vehicles)
+    return vehicles
+}
+
+/**
+ * Listing 2: one vehicle surveys until its battery falls below [lowBattery], then returns home and
+ * lands (at once if the survey ends first).
+ */
+suspend fun Program.listing2(lowBattery: Double = 0.3): PlatformVehicle {
+    val picked = pick { count(1) }
+    val v = picked[0]
+    message("listing 2: ${v.name} surveys until its battery is below ${(lowBattery * 100).toInt()} %")
+    val survey = surveyOf(v, north = 40.m, east = 0.m, length = 400.m, width = 300.m)
+    execute((survey on v) until { battery(v) < lowBattery })
+    if (isOut(v)) {
+        message("listing 2: ${v.name} battery low (${(battery(v) * 100).toInt()} %), returning home")
+        execute(landAtHome(v) on v)
+    }
+    release(picked)
+    return v
+}
+
+/** Listing 3: two vehicles survey two areas concurrently, each returning home when done. */
+suspend fun Program.listing3(): VehicleSet {
+    val vehicles = pick { count(2) }
+    val (a, b) = vehicles.members
+    message("listing 3: ${a.name} and ${b.name} survey side by side")
+    execute((surveyOf(a, north = 40.m, east = 0.m) on a) and (surveyOf(b, north = 40.m, east = 120.m) on b))
+    release(vehicles)
+    return vehicles
+}
+
+/**
+ * Listing 4: keep [airborne] vehicles on survey for [duration]: each slot picks a charged vehicle
+ * (battery ≥ [charged]), surveys until the battery is below [lowBattery], brings it home, releases
+ * it and picks a replacement. When [duration] has passed, every vehicle still out holds and is
+ * then brought home.
+ */
+suspend fun Program.listing4(
+    duration: Duration = 45.minutes,
+    airborne: Int = 2,
+    charged: Double = 0.9,
+    lowBattery: Double = 0.3,
+): Unit {
+    message("listing 4: keeping $airborne vehicles on survey for $duration")
+    val slots = (1..airborne).map { slot -> pod.dsl.action("slot $slot") { keepOnSurvey(slot, charged, lowBattery) } }
+    execute(concurrently(slots) during duration)
+    val out = vehicles.filter(::isOut)
+    if (out.isNotEmpty()) {
+        message("listing 4: time is up; bringing ${out.joinToString { it.name }} home")
+        execute(concurrently(out.map { landAtHome(it) on it }))
+    }
+}
+
+private suspend fun Program.keepOnSurvey(slot: Int, charged: Double, lowBattery: Double) {
+    while (true) {
+        val picked = pick { count(1); battery(atLeast = charged); timeout(60.minutes) }
+        val v = picked[0]
+        message("slot $slot: ${v.name} takes off (battery ${(battery(v) * 100).toInt()} %)")
+        try {
+            while (battery(v) >= lowBattery) {
+                execute((surveyOf(v, north = 40.m, east = (slot - 1) * 150.m, length = 300.m, width = 120.m) on v) until { battery(v) < lowBattery })
+            }
+            if (isOut(v)) {
+                message("slot $slot: ${v.name} battery low (${(battery(v) * 100).toInt()} %), returning")
+                execute(landAtHome(v) on v)
+            }
+        } finally {
+            release(picked)
+        }
+    }
+}
+
+private operator fun Int.times(d: Distance): Distance = d * toDouble()
