@@ -86,113 +86,76 @@ public class MissionBuilder internal constructor(private var name: String) {
     }
 
     /** Flies [north], [east] and [up] from the current position (negative values go south, west, down). */
-    public fun move(north: Distance = Distance.ZERO, east: Distance = Distance.ZERO, up: Distance = Distance.ZERO) {
-        waypoint(relative("move", current("move"), north, east, up))
+    public fun move(north: Distance = 0.m, east: Distance = 0.m, up: Distance = 0.m) {
+        waypoint(fromHere("move", north, east, up))
     }
 
     /** Flies to the point [north] and [east] of home at [up] above it. */
-    public fun moveFromHome(north: Distance = Distance.ZERO, east: Distance = Distance.ZERO, up: Distance = Distance.ZERO) {
-        waypoint(relative("moveFromHome", homeGround("moveFromHome"), north, east, up))
+    public fun moveFromHome(north: Distance = 0.m, east: Distance = 0.m, up: Distance = 0.m) {
+        waypoint(fromHome("moveFromHome", north, east, up))
     }
 
     /** Flies [north], [east] and [up] from the current position and circles there until the mission ends. */
-    public fun moveAndLoiterPos(
-        north: Distance = Distance.ZERO,
-        east: Distance = Distance.ZERO,
-        up: Distance = Distance.ZERO,
-        radius: Distance = DEFAULT_RADIUS,
-    ) {
-        val command = "moveAndLoiterPos"
-        loiter(command, relative(command, current(command), north, east, up), radius, LoiterDuration.Unlimited)
+    public fun moveAndLoiterPos(north: Distance = 0.m, east: Distance = 0.m, up: Distance = 0.m, radius: Distance = 15.m) {
+        loiter("moveAndLoiterPos", fromHere("moveAndLoiterPos", north, east, up), radius, LoiterDuration.Unlimited)
     }
 
     /** Flies [north], [east] and [up] from the current position and circles there [turns] times. */
-    public fun moveAndLoiterTurns(
-        north: Distance = Distance.ZERO,
-        east: Distance = Distance.ZERO,
-        up: Distance = Distance.ZERO,
-        turns: Int,
-        radius: Distance = DEFAULT_RADIUS,
-    ) {
-        val command = "moveAndLoiterTurns"
-        loiter(command, relative(command, current(command), north, east, up), radius, turns(command, turns))
+    public fun moveAndLoiterTurns(north: Distance = 0.m, east: Distance = 0.m, up: Distance = 0.m, turns: Int, radius: Distance = 15.m) {
+        loiter("moveAndLoiterTurns", fromHere("moveAndLoiterTurns", north, east, up), radius, turns("moveAndLoiterTurns", turns))
     }
 
     /** Flies [north], [east] and [up] from the current position and circles there for [time]. */
-    public fun moveAndLoiterTime(
-        north: Distance = Distance.ZERO,
-        east: Distance = Distance.ZERO,
-        up: Distance = Distance.ZERO,
-        time: Duration,
-        radius: Distance = DEFAULT_RADIUS,
-    ) {
-        val command = "moveAndLoiterTime"
-        loiter(command, relative(command, current(command), north, east, up), radius, time(command, time))
+    public fun moveAndLoiterTime(north: Distance = 0.m, east: Distance = 0.m, up: Distance = 0.m, time: Duration, radius: Distance = 15.m) {
+        loiter("moveAndLoiterTime", fromHere("moveAndLoiterTime", north, east, up), radius, time("moveAndLoiterTime", time))
     }
 
     /** Flies to [north], [east] of home at [up] above it and circles there until the mission ends. */
-    public fun moveAndLoiterPosFromHome(
-        north: Distance = Distance.ZERO,
-        east: Distance = Distance.ZERO,
-        up: Distance = Distance.ZERO,
-        radius: Distance = DEFAULT_RADIUS,
-    ) {
+    public fun moveAndLoiterPosFromHome(north: Distance = 0.m, east: Distance = 0.m, up: Distance = 0.m, radius: Distance = 15.m) {
         val command = "moveAndLoiterPosFromHome"
-        loiter(command, relative(command, homeGround(command), north, east, up), radius, LoiterDuration.Unlimited)
+        loiter(command, fromHome(command, north, east, up), radius, LoiterDuration.Unlimited)
     }
 
     /** Flies to [north], [east] of home at [up] above it and circles there [turns] times. */
-    public fun moveAndLoiterTurnsFromHome(
-        north: Distance = Distance.ZERO,
-        east: Distance = Distance.ZERO,
-        up: Distance = Distance.ZERO,
-        turns: Int,
-        radius: Distance = DEFAULT_RADIUS,
-    ) {
+    public fun moveAndLoiterTurnsFromHome(north: Distance = 0.m, east: Distance = 0.m, up: Distance = 0.m, turns: Int, radius: Distance = 15.m) {
         val command = "moveAndLoiterTurnsFromHome"
-        loiter(command, relative(command, homeGround(command), north, east, up), radius, turns(command, turns))
+        loiter(command, fromHome(command, north, east, up), radius, turns(command, turns))
     }
 
     /** Flies to [north], [east] of home at [up] above it and circles there for [time]. */
-    public fun moveAndLoiterTimeFromHome(
-        north: Distance = Distance.ZERO,
-        east: Distance = Distance.ZERO,
-        up: Distance = Distance.ZERO,
-        time: Duration,
-        radius: Distance = DEFAULT_RADIUS,
-    ) {
+    public fun moveAndLoiterTimeFromHome(north: Distance = 0.m, east: Distance = 0.m, up: Distance = 0.m, time: Duration, radius: Distance = 15.m) {
         val command = "moveAndLoiterTimeFromHome"
-        loiter(command, relative(command, homeGround(command), north, east, up), radius, time(command, time))
+        loiter(command, fromHome(command, north, east, up), radius, time(command, time))
     }
 
     /** Flies to [location] and circles it at [radius] until the mission ends. */
-    public fun loiterPos(location: Location, radius: Distance = DEFAULT_RADIUS) {
+    public fun loiterPos(location: Location, radius: Distance = 15.m) {
         loiter("loiterPos", checked("loiterPos", location), radius, LoiterDuration.Unlimited)
     }
 
     /** Flies to [latitude], [longitude] at [height] above home and circles there until the mission ends. */
-    public fun loiterPos(latitude: Double, longitude: Double, height: Distance, radius: Distance = DEFAULT_RADIUS) {
+    public fun loiterPos(latitude: Double, longitude: Double, height: Distance, radius: Distance = 15.m) {
         loiter("loiterPos", coordinates("loiterPos", latitude, longitude, height), radius, LoiterDuration.Unlimited)
     }
 
     /** Flies to [location] and circles it [turns] times at [radius]. */
-    public fun loiterTurns(location: Location, turns: Int, radius: Distance = DEFAULT_RADIUS) {
+    public fun loiterTurns(location: Location, turns: Int, radius: Distance = 15.m) {
         loiter("loiterTurns", checked("loiterTurns", location), radius, turns("loiterTurns", turns))
     }
 
     /** Flies to [latitude], [longitude] at [height] above home and circles there [turns] times. */
-    public fun loiterTurns(latitude: Double, longitude: Double, height: Distance, turns: Int, radius: Distance = DEFAULT_RADIUS) {
+    public fun loiterTurns(latitude: Double, longitude: Double, height: Distance, turns: Int, radius: Distance = 15.m) {
         val at = coordinates("loiterTurns", latitude, longitude, height)
         loiter("loiterTurns", at, radius, turns("loiterTurns", turns))
     }
 
     /** Flies to [location] and circles it at [radius] for [time]. */
-    public fun loiterTime(location: Location, time: Duration, radius: Distance = DEFAULT_RADIUS) {
+    public fun loiterTime(location: Location, time: Duration, radius: Distance = 15.m) {
         loiter("loiterTime", checked("loiterTime", location), radius, time("loiterTime", time))
     }
 
     /** Flies to [latitude], [longitude] at [height] above home and circles there for [time]. */
-    public fun loiterTime(latitude: Double, longitude: Double, height: Distance, time: Duration, radius: Distance = DEFAULT_RADIUS) {
+    public fun loiterTime(latitude: Double, longitude: Double, height: Distance, time: Duration, radius: Distance = 15.m) {
         val at = coordinates("loiterTime", latitude, longitude, height)
         loiter("loiterTime", at, radius, time("loiterTime", time))
     }
@@ -222,7 +185,7 @@ public class MissionBuilder internal constructor(private var name: String) {
     }
 
     /** Flies back over home at the current height and circles there until the mission ends. */
-    public fun returnHomeAndLoiter(radius: Distance = DEFAULT_RADIUS) {
+    public fun returnHomeAndLoiter(radius: Distance = 15.m) {
         val command = "returnHomeAndLoiter"
         loiter(command, homeGround(command).copy(altitude = current(command).altitude), radius, LoiterDuration.Unlimited)
     }
@@ -291,6 +254,12 @@ public class MissionBuilder internal constructor(private var name: String) {
     private fun current(command: String): Location =
         requireNotNull(position) { "$command: no current position; call home(…) or goPos(…) first" }
 
+    private fun fromHere(command: String, north: Distance, east: Distance, up: Distance): Location =
+        relative(command, current(command), north, east, up)
+
+    private fun fromHome(command: String, north: Distance, east: Distance, up: Distance): Location =
+        relative(command, homeGround(command), north, east, up)
+
     private fun homeGround(command: String): Location =
         requireNotNull(home) { "$command: no home; call home(…) first" }.copy(altitude = Distance.ZERO)
 
@@ -330,9 +299,5 @@ public class MissionBuilder internal constructor(private var name: String) {
     private fun time(command: String, time: Duration): LoiterDuration {
         requirePositive(command, "time", time, Duration.ZERO, MissionLimits.loiterTime)
         return LoiterDuration.Time(time)
-    }
-
-    private companion object {
-        val DEFAULT_RADIUS: Distance = 15.m
     }
 }
