@@ -31,7 +31,7 @@ import kotlin.time.Duration
  * Heights are above home. Every command that moves the vehicle updates [position], the point that
  * the next relative command (`move`, `moveAndLoiter…`, `surveyArea`, `returnHome…`) starts from.
  *
- * @see docs/dsl-missions.md for each command, the step it makes and its limits.
+ * docs/dsl-missions.md lists each command, the step it makes, its defaults and its limits.
  */
 @PodDsl
 public class MissionBuilder internal constructor(private var name: String) {
