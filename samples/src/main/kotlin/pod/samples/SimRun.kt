@@ -1,0 +1,93 @@
+package pod.samples
+
+import kotlinx.coroutines.CoroutineStart
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.takeWhile
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.withTimeoutOrNull
+import pod.core.engine.Engine
+import pod.core.engine.EngineConfig
+import pod.core.engine.EngineEvent
+import pod.core.engine.Program
+import pod.core.mission.Mission
+import pod.samples.map.SvgMap
+import pod.samples.map.Tracks
+import pod.sim.SimFlavor
+import pod.sim.SimPlatform
+import java.nio.file.Path
+import kotlin.io.path.writeText
+import kotlin.time.Duration.Companion.seconds
+
+/** What [simulate] saw: every engine event, the missions each vehicle flew, the tracks they flew. */
+class SimRecord(
+    /** Every event, in order. */
+    val events: List<EngineEvent>,
+    /** (vehicle id, mission) for every flight started. */
+    val flights: List<Pair<Int, Mission>>,
+    /** Vehicle id → (name, flown points). */
+    val tracks: Map<Int, Pair<String, List<pod.core.units.Location>>>,
+)
+
+/**
+ * Runs [program] on a fresh simulated fleet of [flavors] at [timeScale]: prints each event through
+ * [onLine] as it happens, writes an SVG map of the planned missions and flown tracks to [map] (if
+ * given) and returns the program's result with a [SimRecord] of the run. The fleet is stopped
+ * afterwards, however the program ends.
+ */
+suspend fun <T> simulate(
+    flavors: List<SimFlavor>,
+    timeScale: Double,
+    onLine: (String) -> Unit = {},
+    onEvent: (EngineEvent) -> Unit = {},
+    map: Path? = null,
+    configure: (SimPlatform) -> Unit = {},
+    program: suspend Program.(SimPlatform) -> T,
+): Pair<T, SimRecord> = coroutineScope {
+    val sim = SimPlatform.start(this, flavors, timeScale)
+    try {
+        configure(sim)
+        val names = sim.platform.vehicles.value.associate { it.id to it.name }
+        val lines = EventLines { names[it] ?: "vehicle $it" }
+        val events = mutableListOf<EngineEvent>()
+        val engine = Engine(sim, EngineConfig())
+        val printer = launch(start = CoroutineStart.UNDISPATCHED) {
+            engine.events.takeWhile { !(it is EngineEvent.Message && it.text == END) }.collect { event ->
+                synchronized(events) { events += event }
+                onEvent(event)
+                lines.line(event)?.let(onLine)
+            }
+        }
+        val tracks = Tracks()
+        val recording = tracks.record(sim, this)
+        try {
+            val result = engine.run {
+                try {
+                    program(sim)
+                } finally {
+                    message(END)
+                }
+            }
+            result to SimRecord(synchronized(events) { events.toList() }, flightsOf(events), tracks.snapshot())
+        } finally {
+            withTimeoutOrNull(5.seconds) { printer.join() }
+            printer.cancel()
+            recording.cancel()
+            if (map != null) map.writeText(svg(flightsOf(events), tracks.snapshot(), "Pod on ${flavors.size} simulated vehicles"))
+        }
+    } finally {
+        sim.close()
+    }
+}
+
+private const val END = "\u0000end of program"
+
+private fun flightsOf(events: List<EngineEvent>): List<Pair<Int, Mission>> =
+    synchronized(events) { events.filterIsInstance<EngineEvent.Flying>().map { it.vehicle to it.mission } }
+
+/** The SVG map of [flights] (planned, dashed) and [tracks] (flown, solid). */
+fun svg(flights: List<Pair<Int, Mission>>, tracks: Map<Int, Pair<String, List<pod.core.units.Location>>>, title: String): String {
+    val map = SvgMap()
+    flights.distinctBy { it.first to it.second.name }.forEach { (id, mission) -> map.planned(id, mission) }
+    tracks.forEach { (id, track) -> map.flown(id, track.first, track.second) }
+    return map.render(title)
+}
