@@ -16,7 +16,7 @@ class FleetChoiceTest : StringSpec({
     }
 
     "sim and connect read back as pod run writes them" {
-        checkAll(Arb.int(1..254), Arb.double(0.01, 1000.0, includeNonFiniteEdgeCases = false)) { count, scale ->
+        checkAll(Arb.int(1..254), Arb.double(0.01, 1000.0, includeNaNs = false)) { count, scale ->
             val choice = FleetChoice.Sim(count, scale)
             val props = choice.toSystemProperties()
             FleetChoice.parse(props[FleetChoice.FLEET_PROPERTY], props[FleetChoice.TIME_SCALE_PROPERTY]) shouldBe choice
