@@ -46,17 +46,17 @@ class ScriptRunSpec : StringSpec({
 
     val distance = "distance: %.3f m".format(Location(41.1785, -8.5957).distanceTo(Location(41.1795, -8.5957)).meters)
 
-    "a script uses Pod's classes, sees the fleet pod run chose, and gets its arguments" {
+    "a script uses Pod's classes (core, dsl), sees the fleet pod run chose, and gets its arguments" {
         val run = pod("run", script("fleet-and-distance.main.kts"), "--sim", "3", "--time-scale", "10", "--", "alpha", "--beta")
         run.err shouldBe ""
         run.exitCode shouldBe 0
-        run.out shouldContainExactly listOf(distance, "fleet: Sim(count=3, timeScale=10.0)", "args: alpha --beta")
+        run.out shouldContainExactly listOf(distance, "fleet: Sim(count=3, timeScale=10.0)", "dsl: PodDsl", "args: alpha --beta")
     }
 
     "the same script again runs from the cache and gets the link given with --connect" {
         val run = pod("run", script("fleet-and-distance.main.kts"), "--connect", "udpin://0.0.0.0:14550")
         run.exitCode shouldBe 0
-        run.out shouldContainExactly listOf(distance, "fleet: Connect(address=udpin://0.0.0.0:14550)", "args: ")
+        run.out shouldContainExactly listOf(distance, "fleet: Connect(address=udpin://0.0.0.0:14550)", "dsl: PodDsl", "args: ")
         cache.listFiles()!!.filter { it.name.endsWith(".jar") } shouldHaveSize 1
     }
 
