@@ -7,103 +7,86 @@ import com.github.ajalt.clikt.parameters.options.convert
 import com.github.ajalt.clikt.parameters.options.default
 import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
+import com.github.ajalt.clikt.parameters.types.double
 import com.github.ajalt.clikt.parameters.types.int
+import com.github.ajalt.clikt.parameters.types.path
 import com.github.ajalt.clikt.parameters.types.restrictTo
-import kotlinx.coroutines.CoroutineScope
-import kotlinx.coroutines.CoroutineStart
-import kotlinx.coroutines.TimeoutCancellationException
-import kotlinx.coroutines.flow.filterIsInstance
-import kotlinx.coroutines.flow.filterNotNull
-import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.runBlocking
-import kotlinx.coroutines.withTimeout
-import kotlinx.coroutines.withTimeoutOrNull
-import kotlinx.coroutines.delay
-import pod.core.vehicle.Autopilot
-import pod.core.vehicle.ConnectionState
-import pod.core.vehicle.VehicleType
-import pod.mavlink.FleetEvent
-import pod.mavlink.GroundStation
-import pod.mavlink.GroundStationConfig
-import pod.sim.SimVehicle
-import pod.sim.SimVehicleConfig
-import kotlin.time.Duration.Companion.seconds
+import pod.core.engine.EngineEvent
+import pod.core.platform.MissionEvent
+import pod.samples.listing4
+import pod.samples.simulate
+import pod.sim.SimFlavor
+import kotlin.io.path.Path
 import kotlin.time.Duration
+import kotlin.time.Duration.Companion.minutes
+import kotlin.time.Duration.Companion.seconds
 
 /**
- * `pod demo`: the bundled scenario on loopback. Starts a ground station and simulated vehicles
- * (an ArduPilot quad, an ArduPilot plane, a PX4 quad, …), shows each as it connects with live
- * position, battery and mode, then stops one and shows it marked lost, and exits.
+ * `pod demo`: the Dolphin report's Listing 4 on simulated drones at an accelerated time scale —
+ * two vehicles kept on survey, each replaced by a charged one when its battery runs low — printing
+ * every task and vehicle event as it happens under a live fleet table, then an SVG map of the
+ * planned missions and the flown tracks.
  */
 internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo") {
-    private val count by option("--vehicles", help = "how many simulated vehicles").int().restrictTo(1..50).default(3)
-    private val json by option("--json", help = "JSON lines instead of a table").flag()
-    private val showFor by option("--show-for", help = "how long to show the full fleet before stopping a vehicle")
-        .convert { text -> Duration.parseOrNull(text)?.takeUnless { it.isNegative() } ?: fail(NOT_A_DURATION.format(text)) }
-        .default(3.seconds)
+    private val count by option("--vehicles", help = "how many simulated drones").int().restrictTo(2..20).default(4)
+    private val timeScale by option("--time-scale", help = "how much faster than real time the vehicles live").double().restrictTo(1.0..200.0).default(40.0)
+    private val length by option("--for", help = "how long the fleet keeps two drones on survey, in vehicle time (e.g. 40m)")
+        .convert { text -> Duration.parseOrNull(text)?.takeIf { it.isPositive() } ?: fail(NOT_A_DURATION.format(text)) }
+        .default(40.minutes)
+    private val map by option("--map", help = "where to write the SVG map").path().default(Path("pod-demo-map.svg"))
+    private val json by option("--json", help = "JSON lines instead of text").flag()
 
     override fun help(context: Context): String =
-        "Simulated fleet on loopback: vehicles connect, show live telemetry, one is stopped and marked lost."
+        "Dolphin's Listing 4 on simulated drones: two kept on survey, each replaced by a charged one when its battery runs low."
 
     override fun run() = runBlocking {
-        val lostAfter = 3.seconds
-        val gcs = GroundStation.open("udpin://127.0.0.1:0", this, GroundStationConfig(lostAfter = lostAfter))
-        val view = LiveView(out, json, period = 1.seconds, redraw = !json && System.console() != null)
-        val vehicles = (1..count).map { id -> SimVehicle(demoVehicle(id, gcs.link.localPort)) }
-        val shown = launch { view.show(gcs) }
+        val view = LiveView(out, json, period = if (json) 20.seconds else 5.seconds, redraw = !json && System.console() != null)
+        var failed: Throwable? = null
         try {
-            view.note("ground station listening on 127.0.0.1:${gcs.link.localPort}; starting $count simulated vehicles")
-            vehicles.forEach { it.start(this) }
-            step("every vehicle connected with a position", 20) {
-                val fleet = gcs.vehicles.first { it.size == count }
-                for (v in fleet.values) {
-                    v.telemetry.position.filterNotNull().first()
-                    v.telemetry.battery.filterNotNull().first()
+            simulate(
+                flavors = List(count) { SimFlavor.ARDUCOPTER },
+                timeScale = timeScale,
+                onLine = { if (!json) view.note(it) },
+                onEvent = { if (json) eventJson(it)?.let(out::line) },
+                map = map,
+            ) { sim ->
+                val shown = launch { view.show(sim.station) }
+                view.note("$count simulated drones at ${timeScale}x; keeping 2 on survey for $length of vehicle time")
+                try {
+                    listing4(duration = length)
+                } finally {
+                    shown.cancel()
+                    view.render(sim.station)
                 }
             }
-            delay(showFor) // let people watch the live table for a moment
-            val victim = vehicles.last()
-            view.note("stopping vehicle ${victim.config.systemId}: it should be marked lost after ${lostAfter.inWholeSeconds} s of silence")
-            val lost = launch(start = CoroutineStart.UNDISPATCHED) {
-                gcs.events.filterIsInstance<FleetEvent.Lost>().first { it.vehicle.systemId == victim.config.systemId }
+        } catch (e: CliktError) {
+            throw e
+        } catch (e: Exception) {
+            failed = e
+        }
+        if (json) out.line(jsonLine("event" to "demo_done", "ok" to (failed == null), "error" to failed?.message, "map" to map.toString()))
+        else out.line(if (failed == null) "demo done; map of missions and tracks: $map" else "demo failed: ${failed.message}; map so far: $map")
+        if (failed != null) throw CliktError("demo failed: ${failed.message}", statusCode = 1)
+    }
+
+    private fun eventJson(event: EngineEvent): String? {
+        val at = event.at.inWholeMilliseconds / 1000.0
+        return when (event) {
+            is EngineEvent.TaskStarted -> jsonLine("event" to "task_started", "at" to at, "id" to event.id, "parent" to event.parent, "task" to event.label, "vehicles" to event.vehicles.joinToString(","))
+            is EngineEvent.TaskCompleted -> jsonLine("event" to "task_done", "at" to at, "id" to event.id, "task" to event.label)
+            is EngineEvent.TaskFailed -> jsonLine("event" to "task_failed", "at" to at, "id" to event.id, "task" to event.label, "error" to event.error.message)
+            is EngineEvent.TaskCancelled -> jsonLine("event" to "task_cancelled", "at" to at, "id" to event.id, "task" to event.label)
+            is EngineEvent.Flying -> jsonLine("event" to "flying", "at" to at, "task" to event.task, "vehicle" to event.vehicle, "mission" to event.mission.name, "steps" to event.mission.steps.size)
+            is EngineEvent.Mission -> when (val e = event.event) {
+                is MissionEvent.StepStarted -> null
+                else -> jsonLine("event" to "mission", "at" to at, "task" to event.task, "vehicle" to event.vehicle, "what" to e.toString())
             }
-            victim.stop()
-            step("vehicle ${victim.config.systemId} marked lost", lostAfter.inWholeSeconds + 10) { lost.join() }
-            val stillUp = gcs.vehicles.value.values.count { it.connection.value == ConnectionState.CONNECTED }
-            view.note("done: $stillUp of $count vehicles connected, vehicle ${victim.config.systemId} lost")
-            view.render(gcs)
-            if (json) out.line(jsonLine("event" to "demo_done", "connected" to stillUp, "lost" to victim.config.systemId))
-        } finally {
-            shown.cancel()
-            vehicles.forEach { it.stop() }
-            gcs.close()
+            is EngineEvent.MadeSafe -> jsonLine("event" to "made_safe", "at" to at, "vehicle" to event.vehicle, "state" to event.state.name, "confirmed" to event.confirmed)
+            is EngineEvent.Picked -> jsonLine("event" to "picked", "at" to at, "vehicles" to event.vehicles.joinToString(","))
+            is EngineEvent.Released -> jsonLine("event" to "released", "at" to at, "vehicles" to event.vehicles.joinToString(","))
+            is EngineEvent.Message -> jsonLine("event" to "message", "at" to at, "text" to event.text)
         }
-    }
-
-    private suspend fun CoroutineScope.step(what: String, seconds: Long, block: suspend () -> Unit) {
-        try {
-            withTimeout(seconds.seconds) { block() }
-        } catch (e: TimeoutCancellationException) {
-            throw CliktError("demo failed: no '$what' within $seconds s", statusCode = 1)
-        }
-    }
-
-    private fun demoVehicle(id: Int, gcsPort: Int): SimVehicleConfig {
-        val (type, autopilot) = when (id % 3) {
-            1 -> VehicleType.QUADROTOR to Autopilot.ARDUPILOT
-            2 -> VehicleType.FIXED_WING to Autopilot.ARDUPILOT
-            else -> VehicleType.QUADROTOR to Autopilot.PX4
-        }
-        val base = SimVehicleConfig.DEFAULT_HOME
-        return SimVehicleConfig(
-            systemId = id,
-            type = type,
-            autopilot = autopilot,
-            home = base.offset(north = pod.core.units.Distance(0.0), east = pod.core.units.Distance(15.0 * (id - 1))),
-            gcs = "udpout://127.0.0.1:$gcsPort",
-            initialCharge = 0.55 + 0.1 * (id % 4),
-            timeScale = 60.0, // a minute of charging per second, so the battery column moves
-        )
     }
 }

@@ -15,7 +15,7 @@ fun interface Output {
 /** The `pod` command. */
 class Pod(out: Output = Output { println(it) }) : CliktCommand(name = "pod") {
     init {
-        subcommands(listOf(SimCommand(out), WatchCommand(out), DemoCommand(out), MissionGroup(out), ParamGroup(out)) + actionCommands(out))
+        subcommands(listOf(SimCommand(out), WatchCommand(out), DemoCommand(out), RunCommand(), MissionGroup(out), ParamGroup(out)) + actionCommands(out))
     }
 
     override fun help(context: Context): String = "Program fleets of drones over MAVLink."

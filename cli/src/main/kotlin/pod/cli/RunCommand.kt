@@ -1,0 +1,76 @@
+package pod.cli
+
+import com.github.ajalt.clikt.core.CliktCommand
+import com.github.ajalt.clikt.core.CliktError
+import com.github.ajalt.clikt.core.Context
+import com.github.ajalt.clikt.core.UsageError
+import com.github.ajalt.clikt.parameters.arguments.argument
+import com.github.ajalt.clikt.parameters.arguments.multiple
+import com.github.ajalt.clikt.parameters.options.option
+import com.github.ajalt.clikt.parameters.types.double
+import com.github.ajalt.clikt.parameters.types.int
+import com.github.ajalt.clikt.parameters.types.restrictTo
+import pod.cli.script.ScriptClasspath
+import pod.cli.script.ScriptHost
+import pod.cli.script.ScriptOutcome
+import pod.launch.FleetChoice
+import pod.mavlink.link.LinkAddress
+import java.io.File
+
+/**
+ * `pod run SCRIPT.main.kts`: compiles and runs a Kotlin script in this JVM with Pod on its
+ * classpath, telling it which fleet to fly through the [FleetChoice] system properties.
+ */
+internal class RunCommand : CliktCommand(name = "run") {
+    private val script by argument("SCRIPT", help = "a .main.kts script")
+    private val scriptArgs by argument("ARGS", help = "passed to the script as args (put them after --)").multiple()
+    private val sim by option("--sim", metavar = "N", help = "fly N simulated vehicles (default: 4)").int().restrictTo(1..254)
+    private val connect by option("--connect", metavar = "ADDR", help = "fly the vehicles on this link (udpin://0.0.0.0:14550, …)")
+    private val timeScale by option("--time-scale", metavar = "X", help = "simulated seconds per real second (with --sim)")
+        .double().restrictTo(0.01..1000.0)
+
+    override fun help(context: Context): String =
+        "Run a .main.kts script with Pod on its classpath, on a simulated or a real fleet."
+
+    override fun run() {
+        val file = File(script)
+        if (!file.isFile) throw CliktError("error: no such script: $script", statusCode = 2)
+        val choice = fleetChoice()
+        val outcome = withSystemProperties(choice.toSystemProperties()) {
+            ScriptHost(ScriptClasspath.forScripts()).run(file, scriptArgs) { echo(it, err = true) }
+        }
+        when (outcome) {
+            ScriptOutcome.Completed -> Unit
+            is ScriptOutcome.CompileFailed -> throw CliktError(outcome.messages.joinToString("\n"), statusCode = 1)
+            is ScriptOutcome.Threw -> {
+                val what = outcome.error.message ?: outcome.error.javaClass.name
+                val where = outcome.line?.let { " (${file.name}:$it)" }.orEmpty()
+                throw CliktError("error: $what$where", statusCode = 1)
+            }
+        }
+    }
+
+    private fun fleetChoice(): FleetChoice {
+        val address = connect
+        return when {
+            address != null && sim != null -> throw UsageError("--sim and --connect exclude each other")
+            address != null && timeScale != null -> throw UsageError("--time-scale applies to simulated fleets (--sim) only")
+            address != null -> {
+                reportingLinkErrors { LinkAddress.parse(address) }
+                FleetChoice.Connect(address)
+            }
+            else -> FleetChoice.Sim(sim ?: 4, timeScale ?: 1.0)
+        }
+    }
+}
+
+/** Runs [block] with [properties] set, restoring what was there before (tests run `pod` in-process). */
+private inline fun <T> withSystemProperties(properties: Map<String, String>, block: () -> T): T {
+    val before = properties.keys.associateWith { System.getProperty(it) }
+    properties.forEach { (k, v) -> System.setProperty(k, v) }
+    try {
+        return block()
+    } finally {
+        before.forEach { (k, v) -> if (v == null) System.clearProperty(k) else System.setProperty(k, v) }
+    }
+}

@@ -1,0 +1,85 @@
+package pod.launch
+
+/**
+ * Which fleet a program flies: the launch contract between `pod run` and the program it runs.
+ *
+ * `pod run` passes the choice as system properties ([FLEET_PROPERTY], [TIME_SCALE_PROPERTY]);
+ * a program reads it back with [fromSystemProperties]. Run any other way (plain `kotlin x.main.kts`,
+ * an IDE, a test) the properties are absent and the program gets [DEFAULT]: four simulated vehicles
+ * in real time. A JVM started by hand can pass the same properties:
+ * `-Dpod.fleet=connect:udpin://0.0.0.0:14550`.
+ *
+ * | property | values | default |
+ * |---|---|---|
+ * | `pod.fleet` | `sim:N` (1..254 vehicles) or `connect:ADDRESS` (a connection string as `pod watch` takes) | `sim:4` |
+ * | `pod.timeScale` | simulated seconds per real second, 0.01..1000; only with `sim:N` | `1` |
+ */
+sealed interface FleetChoice {
+    /** The same choice as system properties, as `pod run` sets them. */
+    fun toSystemProperties(): Map<String, String>
+
+    /** [count] simulated vehicles on loopback, their clocks running [timeScale] times real time. */
+    data class Sim(val count: Int = 4, val timeScale: Double = 1.0) : FleetChoice {
+        init {
+            require(count in 1..254) { "count must be in 1..254, was $count" }
+            require(timeScale in 0.01..1000.0) { "timeScale must be in 0.01..1000, was $timeScale" }
+        }
+
+        override fun toSystemProperties(): Map<String, String> =
+            mapOf(FLEET_PROPERTY to "sim:$count", TIME_SCALE_PROPERTY to timeScale.toString())
+    }
+
+    /** Real (or externally simulated) vehicles reached through [address], e.g. `udpin://0.0.0.0:14550`. */
+    data class Connect(val address: String) : FleetChoice {
+        init {
+            require(address.isNotBlank()) { "address must not be blank" }
+        }
+
+        override fun toSystemProperties(): Map<String, String> = mapOf(FLEET_PROPERTY to "connect:$address")
+    }
+
+    companion object {
+        /** `sim:N` or `connect:ADDRESS`. */
+        const val FLEET_PROPERTY: String = "pod.fleet"
+
+        /** Simulated seconds per real second for `sim:N`. */
+        const val TIME_SCALE_PROPERTY: String = "pod.timeScale"
+
+        /** What a program gets when nothing chose a fleet. */
+        val DEFAULT: FleetChoice = Sim(4)
+
+        /**
+         * The choice in this JVM's system properties, or [DEFAULT] when there is none.
+         * @throws IllegalArgumentException naming the property when a value is malformed.
+         */
+        fun fromSystemProperties(): FleetChoice =
+            parse(System.getProperty(FLEET_PROPERTY), System.getProperty(TIME_SCALE_PROPERTY))
+
+        /**
+         * The choice that property values [fleet] and [timeScale] describe (null: not set).
+         * @throws IllegalArgumentException naming the property when a value is malformed.
+         */
+        fun parse(fleet: String?, timeScale: String?): FleetChoice {
+            val scale = timeScale?.let {
+                it.trim().toDoubleOrNull()?.takeIf { s -> s in 0.01..1000.0 }
+                    ?: throw IllegalArgumentException("$TIME_SCALE_PROPERTY must be a number in 0.01..1000, was '$it'")
+            }
+            val value = fleet?.trim()
+            return when {
+                value.isNullOrEmpty() -> if (scale == null) DEFAULT else Sim(timeScale = scale)
+                value.startsWith("sim:") -> {
+                    val count = value.removePrefix("sim:").toIntOrNull()?.takeIf { it in 1..254 }
+                        ?: throw IllegalArgumentException("$FLEET_PROPERTY=$value: the vehicle count must be in 1..254")
+                    Sim(count, scale ?: 1.0)
+                }
+                value.startsWith("connect:") -> {
+                    require(scale == null) { "$TIME_SCALE_PROPERTY applies to simulated fleets only, not to $FLEET_PROPERTY=$value" }
+                    val address = value.removePrefix("connect:")
+                    require(address.isNotBlank()) { "$FLEET_PROPERTY=$value: the connection string is missing" }
+                    Connect(address)
+                }
+                else -> throw IllegalArgumentException("$FLEET_PROPERTY must be sim:N or connect:ADDRESS, was '$value'")
+            }
+        }
+    }
+}

@@ -1,0 +1,85 @@
+package pod.e2e
+
+import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.collections.shouldContainExactly
+import io.kotest.matchers.collections.shouldHaveSize
+import io.kotest.matchers.shouldBe
+import io.kotest.matchers.string.shouldContain
+import io.kotest.matchers.string.shouldNotContain
+import pod.core.units.Location
+import java.io.File
+import java.nio.file.Files
+import java.util.concurrent.TimeUnit
+
+/** What `pod run` printed and how it exited. */
+private class Run(val exitCode: Int, val out: List<String>, val err: String)
+
+/**
+ * `pod run` as a person runs it: a JVM of its own (`pod.cli.MainKt` on this test's classpath, as
+ * the `./pod` launcher starts it), scripts from src/test/resources/scripts, a fresh script cache.
+ */
+class ScriptRunSpec : StringSpec({
+    val cache = Files.createTempDirectory("pod-script-cache").toFile()
+    afterSpec { cache.deleteRecursively() }
+
+    fun script(name: String): String =
+        File(ScriptRunSpec::class.java.getResource("/scripts/$name")!!.toURI()).path
+
+    fun pod(vararg args: String): Run {
+        val dir = Files.createTempDirectory("pod-run").toFile()
+        try {
+            val java = File(System.getProperty("java.home"), "bin/java").path
+            val process = ProcessBuilder(
+                listOf(java, "-XX:+UseSerialGC", "-XX:TieredStopAtLevel=1", "-cp", System.getProperty("java.class.path"), "pod.cli.MainKt") +
+                    args,
+            ).redirectOutput(File(dir, "out")).redirectError(File(dir, "err")).redirectInput(ProcessBuilder.Redirect.PIPE)
+                .also { it.environment()["POD_SCRIPT_CACHE"] = cache.path }
+                .start()
+            process.outputStream.close()
+            // A bound against a hung child, not a timing assertion.
+            check(process.waitFor(5, TimeUnit.MINUTES)) { process.destroyForcibly(); "pod run did not finish" }
+            return Run(process.exitValue(), File(dir, "out").readLines(), File(dir, "err").readText())
+        } finally {
+            dir.deleteRecursively()
+        }
+    }
+
+    val distance = "distance: %.3f m".format(Location(41.1785, -8.5957).distanceTo(Location(41.1795, -8.5957)).meters)
+
+    "a script uses Pod's classes (core, dsl), sees the fleet pod run chose, and gets its arguments" {
+        val run = pod("run", script("fleet-and-distance.main.kts"), "--sim", "3", "--time-scale", "10", "--", "alpha", "--beta")
+        run.err shouldBe ""
+        run.exitCode shouldBe 0
+        run.out shouldContainExactly listOf(distance, "fleet: Sim(count=3, timeScale=10.0)", "dsl: PodDsl", "args: alpha --beta")
+    }
+
+    "the same script again runs from the cache and gets the link given with --connect" {
+        val run = pod("run", script("fleet-and-distance.main.kts"), "--connect", "udpin://0.0.0.0:14550")
+        run.exitCode shouldBe 0
+        run.out shouldContainExactly listOf(distance, "fleet: Connect(address=udpin://0.0.0.0:14550)", "dsl: PodDsl", "args: ")
+        cache.listFiles()!!.filter { it.name.endsWith(".jar") } shouldHaveSize 1
+    }
+
+    "a syntax error is reported at its file and line, with exit code 1 and no stack trace" {
+        val run = pod("run", script("syntax-error.main.kts"))
+        run.exitCode shouldBe 1
+        run.out shouldBe emptyList()
+        run.err shouldContain "syntax-error.main.kts:4:"
+        run.err shouldContain "error:"
+        run.err shouldNotContain "Exception"
+        run.err shouldNotContain "\tat "
+    }
+
+    "an exception thrown by the script prints its message and the script's line, with exit code 1" {
+        val run = pod("run", script("throws.main.kts"))
+        run.exitCode shouldBe 1
+        run.out shouldContainExactly listOf("before")
+        run.err.trim() shouldBe "error: latitude must be in -90..90, was 91.0 (throws.main.kts:4)"
+    }
+
+    "a missing script is a clear error with exit code 2" {
+        val run = pod("run", "no-such-script.main.kts", "--sim", "3")
+        run.exitCode shouldBe 2
+        run.err.trim() shouldBe "error: no such script: no-such-script.main.kts"
+    }
+})
