@@ -44,7 +44,7 @@ public enum class SimFlavor(
  * vehicle is heard with a position and a GPS fix, so it can arm; [close] stops everything.
  *
  * ```
- * val fleet = SimPlatform.start(scope, count = 3, timeScale = 20.0)
+ * val fleet = SimPlatform.start(scope, List(3) { SimFlavor.ARDUCOPTER }, timeScale = 20.0)
  * engine.run(program, fleet)
  * fleet.close()
  * ```
@@ -70,21 +70,6 @@ public class SimPlatform private constructor(
 
     public companion object {
         /**
-         * Starts [count] vehicles of [flavor] in [scope]: see the other [start].
-         */
-        public suspend fun start(
-            scope: CoroutineScope,
-            count: Int = 3,
-            flavor: SimFlavor = SimFlavor.ARDUCOPTER,
-            timeScale: Double = 10.0,
-            home: Location = SimVehicleConfig.DEFAULT_HOME,
-            spacing: Distance = 5.m,
-            firstSystemId: Int = 1,
-            payloads: (MavlinkVehicle) -> Set<String> = { MavlinkPlatform.DEFAULT_PAYLOADS },
-            readyTimeout: Duration = 30.seconds,
-        ): SimPlatform = start(scope, List(count) { flavor }, timeScale, home, spacing, firstSystemId, payloads, readyTimeout)
-
-        /**
          * Starts one vehicle per entry of [flavors] in [scope], system ids from [firstSystemId],
          * parked [spacing] apart on a ring around [home] (its centre free), with a ground station
          * listening on a free loopback port. Waits up to [readyTimeout] until each vehicle is heard
@@ -93,7 +78,7 @@ public class SimPlatform private constructor(
          */
         public suspend fun start(
             scope: CoroutineScope,
-            flavors: List<SimFlavor>,
+            flavors: List<SimFlavor> = List(3) { SimFlavor.ARDUCOPTER },
             timeScale: Double = 10.0,
             home: Location = SimVehicleConfig.DEFAULT_HOME,
             spacing: Distance = 5.m,
