@@ -55,7 +55,7 @@ public class GroundStation private constructor(
     parent: CoroutineScope,
     private val codec: MessageCodec,
 ) {
-    private val scope = CoroutineScope(
+    internal val scope: CoroutineScope = CoroutineScope(
         parent.coroutineContext + SupervisorJob(parent.coroutineContext.job) +
             Dispatchers.Default + CoroutineName("pod-gcs(${link.address})"),
     )

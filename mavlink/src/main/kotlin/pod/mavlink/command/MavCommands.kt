@@ -19,6 +19,8 @@ public object MavCommands {
     public const val NAV_LAND: Int = 21
     /** NAV_TAKEOFF. */
     public const val NAV_TAKEOFF: Int = 22
+    /** NAV_CONTINUE_AND_CHANGE_ALT. */
+    public const val NAV_CONTINUE_AND_CHANGE_ALT: Int = 30
     /** NAV_LOITER_TO_ALT. */
     public const val NAV_LOITER_TO_ALT: Int = 31
     /** NAV_SPLINE_WAYPOINT. */
@@ -27,6 +29,8 @@ public object MavCommands {
     public const val NAV_VTOL_TAKEOFF: Int = 84
     /** NAV_VTOL_LAND. */
     public const val NAV_VTOL_LAND: Int = 85
+    /** NAV_DELAY. */
+    public const val NAV_DELAY: Int = 93
     /** CONDITION_DELAY. */
     public const val CONDITION_DELAY: Int = 112
     /** CONDITION_YAW. */

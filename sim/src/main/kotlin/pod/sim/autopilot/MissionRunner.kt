@@ -14,6 +14,8 @@ import pod.mavlink.command.MavCommands.DO_SET_CAM_TRIGG_DIST
 import pod.mavlink.command.MavCommands.DO_SET_HOME
 import pod.mavlink.command.MavCommands.IMAGE_START_CAPTURE
 import pod.mavlink.command.MavCommands.IMAGE_STOP_CAPTURE
+import pod.mavlink.command.MavCommands.NAV_CONTINUE_AND_CHANGE_ALT
+import pod.mavlink.command.MavCommands.NAV_DELAY
 import pod.mavlink.command.MavCommands.NAV_LAND
 import pod.mavlink.command.MavCommands.NAV_LOITER_TIME
 import pod.mavlink.command.MavCommands.NAV_LOITER_TO_ALT
@@ -190,6 +192,16 @@ internal class MissionRunner(private val ap: SimAutopilot) {
                 if (plan.circlingHome) null else g
             }
             NAV_LOITER_UNLIM -> loiter(it, target)
+            NAV_DELAY -> {
+                val until = item.waitUntil ?: (ap.time + it.param1).also { t -> item.waitUntil = t }
+                holdAt = target
+                if (ap.time < until) hold() else null
+            }
+            NAV_CONTINUE_AND_CHANGE_ALT -> when {
+                abs(body.location.altitude.meters - target.altitude.meters) < 2.0 -> null
+                ap.multirotor -> Guidance.GoTo(target)
+                else -> Guidance.Cruise(body.heading, target.altitude.meters)
+            }
             NAV_LOITER_TIME -> loiter(it, target).takeIf { _ -> item.arrivedAt.let { a -> a == null || ap.time - a < it.param1 } }
             NAV_LOITER_TURNS -> turns(it, target)
             else -> waypoint(it, target)
@@ -334,7 +346,7 @@ internal class MissionRunner(private val ap: SimAutopilot) {
     companion object {
         val NAV = setOf(
             NAV_WAYPOINT, NAV_LOITER_UNLIM, NAV_LOITER_TURNS, NAV_LOITER_TIME, NAV_RETURN_TO_LAUNCH, NAV_LAND, NAV_TAKEOFF,
-            NAV_LOITER_TO_ALT, NAV_SPLINE_WAYPOINT, NAV_VTOL_TAKEOFF, NAV_VTOL_LAND,
+            NAV_LOITER_TO_ALT, NAV_SPLINE_WAYPOINT, NAV_VTOL_TAKEOFF, NAV_VTOL_LAND, NAV_DELAY, NAV_CONTINUE_AND_CHANGE_ALT,
         )
         private const val MAX_ITEMS_PER_STEP = 64
     }

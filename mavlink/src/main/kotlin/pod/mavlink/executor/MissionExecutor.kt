@@ -1,0 +1,229 @@
+package pod.mavlink.executor
+
+import java.util.concurrent.atomic.AtomicBoolean
+import kotlin.time.TimeMark
+import kotlin.time.TimeSource
+import kotlinx.coroutines.CancellationException
+import kotlinx.coroutines.CoroutineStart
+import kotlinx.coroutines.channels.Channel
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.currentCoroutineContext
+import kotlinx.coroutines.cancelChildren
+import kotlinx.coroutines.flow.MutableSharedFlow
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.SharedFlow
+import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.asSharedFlow
+import kotlinx.coroutines.flow.asStateFlow
+import kotlinx.coroutines.flow.combine
+import kotlinx.coroutines.flow.filterNotNull
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.withTimeoutOrNull
+import pod.core.mission.Mission
+import pod.core.mission.MissionCompletion
+import pod.core.mission.MissionStep
+import pod.core.platform.MissionEvent
+import pod.core.units.Location
+import pod.core.units.m
+import pod.core.vehicle.ConnectionState
+import pod.core.vehicle.LandedState
+import pod.core.vehicle.VehicleLost
+import pod.mavlink.MavlinkVehicle
+import pod.mavlink.plan.MissionFlavor
+import pod.mavlink.plan.MissionPlan
+import pod.mavlink.plan.MissionPlanner
+import pod.mavlink.telemetry.FlightModes
+import pod.mavlink.telemetry.ModeRole
+
+/**
+ * Flies one [mission] on one [vehicle]: clears the vehicle's list and uploads the plan for its
+ * flavour, arms it right before the start (ArduCopter in GUIDED, so AUTO then flies the take-off
+ * item), starts it, follows MISSION_CURRENT and MISSION_ITEM_REACHED as mission-step events, and
+ * returns when the mission is complete:
+ * - [MissionCompletion.LAST_STEP_DONE]: the last step is done (a plane whose mission ends with a
+ *   return home: the return item is reached, since it then circles home);
+ * - [MissionCompletion.LANDED]: on the ground and disarmed after the last step;
+ * - [MissionCompletion.LOITERING]: at the final loiter point, at its height.
+ *
+ * A vehicle already flying is not armed again, nor does its home change. Failures are typed:
+ * [MissionNotFlyable] before anything is sent, the transfer and command exceptions of the
+ * services, [pod.mavlink.action.ActionException], [VehicleLost] when the vehicle falls silent,
+ * [MissionInterrupted] when it leaves its mission mode. Cancelling [run] returns promptly and
+ * leaves the vehicle as it is (callers make it safe).
+ *
+ * One executor runs once.
+ */
+public class MissionExecutor(
+    /** The vehicle that flies. */
+    public val vehicle: MavlinkVehicle,
+    /** What it flies. */
+    public val mission: Mission,
+    /** Time limits. */
+    public val timing: ExecutorTiming = ExecutorTiming(),
+) {
+    private val ran = AtomicBoolean(false)
+    private val _state = MutableStateFlow(MissionRunState.IDLE)
+    private val _progress = MutableStateFlow(MissionProgress(null, 0, mission.steps.size, null))
+    private val _events = MutableSharedFlow<MissionEvent>(replay = 2 * mission.steps.size + 3)
+    private val _plan = MutableStateFlow<MissionPlan?>(null)
+
+    /** Where the run is. */
+    public val state: StateFlow<MissionRunState> = _state.asStateFlow()
+
+    /** How far the vehicle is. */
+    public val progress: StateFlow<MissionProgress> = _progress.asStateFlow()
+
+    /** Every event of the run so far (replayed to late collectors), in order. */
+    public val events: SharedFlow<MissionEvent> = _events.asSharedFlow()
+
+    /** The plan uploaded, once made. */
+    public val plan: StateFlow<MissionPlan?> = _plan.asStateFlow()
+
+    /** Flies the mission to completion, passing each event to [report] as it happens (see the class comment). */
+    public suspend fun run(report: suspend (MissionEvent) -> Unit = {}) {
+        check(ran.compareAndSet(false, true)) { "a MissionExecutor runs once; make a new one for another flight" }
+        try {
+            fly(report)
+            _state.value = MissionRunState.COMPLETED
+        } catch (e: CancellationException) {
+            _state.value = MissionRunState.CANCELLED
+            throw e
+        } catch (e: Throwable) {
+            _state.value = MissionRunState.FAILED
+            throw e
+        }
+    }
+
+    private suspend fun fly(report: suspend (MissionEvent) -> Unit) {
+        val identity = vehicle.identity.value
+        val flavor = MissionFlavor.of(identity)
+        if (vehicle.connection.value == ConnectionState.LOST) throw VehicleLost(vehicle.systemId, during)
+        val airborne = airborne()
+        if (!airborne && !flavor.isPx4 && mission.steps.firstOrNull { it !is MissionStep.Action } !is MissionStep.TakeOff) {
+            throw MissionNotFlyable(mission.name, "on ${flavor.name} a mission flown from the ground must begin with a take-off")
+        }
+        val plan = MissionPlanner.plan(mission, flavor, mission.home ?: awaitHome())
+        if (plan.items.size <= flavor.firstItem) throw MissionNotFlyable(mission.name, "it has no step ${flavor.name} flies as a mission item")
+        _plan.value = plan
+        val emit: suspend (MissionEvent) -> Unit = { event ->
+            _events.emit(event)
+            report(event)
+        }
+
+        _state.value = MissionRunState.UPLOADING
+        vehicle.mission.clear()
+        vehicle.mission.upload(plan.items)
+        emit(MissionEvent.Uploaded(mission.steps.size))
+
+        _state.value = MissionRunState.STARTING
+        if (!airborne) plan.beforeStart.forEach { vehicle.commands.send(it) }
+        vehicle.mission.setCurrent(flavor.firstItem)
+        coroutineScope {
+            // Subscribe before the start so that no report of the flight is missed.
+            val inbox = Channel<Input>(Channel.UNLIMITED)
+            launch(start = CoroutineStart.UNDISPATCHED) { vehicle.telemetry.missionCurrent.filterNotNull().collect { inbox.send(Input.Current(it)) } }
+            launch(start = CoroutineStart.UNDISPATCHED) { vehicle.telemetry.itemReached.collect { inbox.send(Input.Reached(it)) } }
+            launch(start = CoroutineStart.UNDISPATCHED) {
+                combine(vehicle.telemetry.position, vehicle.telemetry.landedState, vehicle.telemetry.armed, vehicle.telemetry.mode, vehicle.connection) { p, l, a, m, c ->
+                    Input.Vehicle(p, l, a, m?.name, c)
+                }.collect { inbox.send(it) }
+            }
+            if (!airborne) {
+                if (flavor == MissionFlavor.ARDUCOPTER) vehicle.action.setMode(FlightModes.forRole(identity.autopilot, identity.type, ModeRole.GUIDED)!!)
+                vehicle.action.arm()
+            }
+            vehicle.action.startMission()
+            emit(MissionEvent.Started)
+            _state.value = MissionRunState.FLYING
+            follow(plan, flavor, airborne, inbox, emit)
+            currentCoroutineContext()[kotlinx.coroutines.Job]?.cancelChildren()
+        }
+    }
+
+    private sealed interface Input {
+        data class Current(val seq: Int) : Input
+        data class Reached(val seq: Int) : Input
+        data class Vehicle(
+            val position: pod.core.vehicle.Position?,
+            val landed: LandedState,
+            val armed: Boolean,
+            val mode: String?,
+            val connection: ConnectionState,
+        ) : Input
+    }
+
+    private suspend fun follow(plan: MissionPlan, flavor: MissionFlavor, airborneAtStart: Boolean, inbox: Channel<Input>, emit: suspend (MissionEvent) -> Unit) {
+        val tracker = ProgressTracker(plan)
+        val rule = CompletionRules.rule(mission, flavor)
+        val identity = vehicle.identity.value
+        val missionMode = FlightModes.forRole(identity.autopilot, identity.type, ModeRole.MISSION)
+        val finalLoiter = mission.steps.last() as? MissionStep.Loiter
+        var seen: Input.Vehicle? = null
+        var airborneSeen = airborneAtStart
+        var leftMission: TimeMark? = null
+
+        suspend fun carryOut(outputs: List<ProgressTracker.Output>) {
+            for (out in outputs) when (out) {
+                is ProgressTracker.Output.Event -> {
+                    _progress.value = MissionProgress(tracker.currentStep, tracker.next, plan.stepCount, tracker.currentItem.takeIf { it >= 0 })
+                    emit(out.event)
+                }
+                is ProgressTracker.Output.Send -> {
+                    out.commands.forEach { vehicle.commands.send(it) }
+                    carryOut(tracker.commandsSent(out.step))
+                }
+            }
+            _progress.value = MissionProgress(tracker.currentStep, tracker.next, plan.stepCount, tracker.currentItem.takeIf { it >= 0 })
+        }
+
+        fun complete(v: Input.Vehicle?): Boolean = when (rule) {
+            MissionCompletion.LAST_STEP_DONE -> tracker.allDone
+            MissionCompletion.LANDED -> v != null && v.landed == LandedState.ON_GROUND && !v.armed &&
+                (tracker.allDone || (airborneSeen && tracker.currentItem >= tracker.lastStepStart))
+            MissionCompletion.LOITERING -> finalLoiter != null && v?.position != null && tracker.next >= plan.stepCount - 1 &&
+                tracker.currentItem >= tracker.lastStepStart && CompletionRules.loitering(finalLoiter, flavor, v.position)
+        }
+
+        while (true) {
+            val input = leftMission?.let { left ->
+                val remaining = timing.modeGrace - left.elapsedNow()
+                withTimeoutOrNull(remaining) { inbox.receive() } ?: throw MissionInterrupted(mission.name, seen?.mode ?: "?", tracker.currentStep)
+            } ?: inbox.receive()
+            when (input) {
+                is Input.Current -> carryOut(tracker.onCurrent(input.seq))
+                is Input.Reached -> carryOut(tracker.onReached(input.seq))
+                is Input.Vehicle -> {
+                    if (input.connection == ConnectionState.LOST) throw VehicleLost(vehicle.systemId, during)
+                    seen = input
+                    if (input.landed == LandedState.IN_AIR || (input.position?.relativeAltitude?.meters ?: 0.0) > 1.0) airborneSeen = true
+                }
+            }
+            if (complete(seen)) {
+                carryOut(tracker.finish())
+                return
+            }
+            val outOfMission = seen?.mode != null && seen?.mode != missionMode && !tracker.allDone
+            leftMission = if (outOfMission) leftMission ?: TimeSource.Monotonic.markNow() else null
+        }
+    }
+
+    private fun airborne(): Boolean {
+        val landed = vehicle.telemetry.landedState.value
+        val height = vehicle.telemetry.position.value?.relativeAltitude?.meters ?: 0.0
+        return landed == LandedState.IN_AIR || landed == LandedState.TAKEOFF || landed == LandedState.LANDING ||
+            (vehicle.telemetry.armed.value && height > 1.0)
+    }
+
+    /** The vehicle's home: HOME_POSITION, or where its position report puts it. */
+    private suspend fun awaitHome(): Location {
+        vehicle.telemetry.home.value?.let { return it }
+        return withTimeoutOrNull(timing.homeTimeout) {
+            combine(vehicle.telemetry.home, vehicle.telemetry.position) { home, position ->
+                home ?: position?.takeIf { !airborne() }?.let { it.location.copy(altitude = (it.location.altitude.meters - it.relativeAltitude.meters).m) }
+            }.filterNotNull().first()
+        } ?: throw MissionNotFlyable(mission.name, "the vehicle reported no home within ${timing.homeTimeout}")
+    }
+
+    private val during: String get() = "mission \"${mission.name}\""
+}

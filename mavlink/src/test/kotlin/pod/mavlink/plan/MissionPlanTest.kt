@@ -1,0 +1,138 @@
+package pod.mavlink.plan
+
+import io.kotest.assertions.withClue
+import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.collections.shouldBeSorted
+import io.kotest.matchers.shouldBe
+import io.kotest.property.Arb
+import io.kotest.property.arbitrary.arbitrary
+import io.kotest.property.arbitrary.enum
+import io.kotest.property.arbitrary.int
+import io.kotest.property.arbitrary.list
+import io.kotest.property.arbitrary.orNull
+import io.kotest.property.checkAll
+import kotlin.time.Duration.Companion.seconds
+import pod.core.mission.LoiterDuration
+import pod.core.mission.Mission
+import pod.core.mission.MissionStep
+import pod.core.mission.PrecisionLand
+import pod.core.mission.SpeedKind
+import pod.core.units.Location
+import pod.core.units.deg
+import pod.core.units.m
+import pod.core.units.mps
+import pod.mavlink.command.MavCommands
+
+/** Locations as the wire carries them: degrees × 10⁷, heights a float holds exactly. */
+private val locations = arbitrary {
+    Location(Arb.int(411_000_000..412_000_000).bind() / 1e7, Arb.int(-86_500_000..-85_500_000).bind() / 1e7, (Arb.int(0..800).bind() * 0.5).m)
+}
+
+/** Steps that [flavor] takes as mission items and reads back unchanged. */
+internal fun steps(flavor: MissionFlavor) = arbitrary {
+    val at = locations.bind()
+    when (Arb.int(0..9).bind()) {
+        0 -> MissionStep.TakeOff(at, (if (flavor.fixedWing) Arb.int(0..30).bind() else 0).deg)
+        1 -> MissionStep.Waypoint(at, Arb.int(0..60).bind().seconds)
+        2 -> MissionStep.Loiter(
+            at, Arb.int(-100..100).bind().m,
+            when (Arb.int(0..2).bind()) {
+                0 -> LoiterDuration.Unlimited
+                1 -> if (flavor.isPx4) LoiterDuration.Unlimited else LoiterDuration.Turns(Arb.int(1..10).bind())
+                else -> LoiterDuration.Time(Arb.int(1..120).bind().seconds)
+            },
+        )
+        3 -> MissionStep.Land(at.copy(altitude = 0.m), Arb.int(0..359).orNull().bind()?.deg, Arb.enum<PrecisionLand>().bind())
+        4 -> MissionStep.ReturnHome
+        5 -> {
+            val kinds = if (flavor == MissionFlavor.ARDUCOPTER) SpeedKind.entries else listOf(SpeedKind.AIR, SpeedKind.GROUND)
+            MissionStep.ChangeSpeed(kinds[Arb.int(kinds.indices).bind()], (Arb.int(1..60).bind() * 0.5).mps)
+        }
+        6 -> if (flavor == MissionFlavor.ARDUPLANE) MissionStep.ChangeAltitude((Arb.int(0..400).bind() * 0.5).m) else MissionStep.StopCapture
+        7 -> MissionStep.Delay(Arb.int(1..60).bind().seconds)
+        8 -> MissionStep.StartCapture(Arb.int(0..20).bind(), Arb.int(1..10).bind().seconds)
+        else -> MissionStep.StopCapture
+    }
+}
+
+private val home = Location(41.178_046, -8.595_786, 120.m)
+
+class MissionPlanTest : StringSpec({
+    for (flavor in MissionFlavor.entries) {
+        "a ${flavor.name} mission reads back from its items as the same steps" {
+            checkAll(300, Arb.list(steps(flavor), 1..25)) { steps ->
+                val plan = MissionPlanner.plan(Mission("m", null, steps), flavor, home)
+                plan.keyedCommands shouldBe emptyList()
+                MissionReader.steps(plan.items, flavor) shouldBe steps
+            }
+        }
+
+        "every ${flavor.name} item but home belongs to one step, in step order, and every step has items" {
+            checkAll(200, Arb.list(steps(flavor), 1..25)) { steps ->
+                val plan = MissionPlanner.plan(Mission("m", null, steps), flavor, home)
+                plan.items.indices.map { it } shouldBe plan.items.map { it.seq }
+                val mapped = plan.items.indices.drop(flavor.firstItem).map { plan.stepOf(it)!! }
+                mapped.shouldBeSorted()
+                mapped.toSet() shouldBe steps.indices.toSet()
+                withClue("home is not a step") { plan.stepOf(0) shouldBe if (flavor.homeAtZero) null else 0 }
+            }
+        }
+    }
+
+    "ArduPilot's item 0 is the mission's home at its altitude above sea level, and DO_SET_HOME sets it before the start" {
+        val launch = Location(41.17, -8.59, 95.5.m)
+        val mission = Mission("m", launch, listOf(MissionStep.TakeOff(launch.copy(altitude = 10.m), 0.deg)))
+        val plan = MissionPlanner.plan(mission, MissionFlavor.ARDUCOPTER, home)
+        plan.items[0].frame shouldBe 0
+        plan.items[0].z shouldBe 95.5f
+        plan.items[0].latitude shouldBe 41.17
+        plan.beforeStart.single().command shouldBe MavCommands.DO_SET_HOME
+        plan.beforeStart.single().param7 shouldBe 95.5f
+        MissionReader.mission("m", plan.items, MissionFlavor.ARDUCOPTER).home shouldBe launch
+        MissionPlanner.plan(mission.copy(home = null), MissionFlavor.ARDUCOPTER, home).beforeStart shouldBe emptyList()
+    }
+
+    "an ArduPlane landing is preceded by DO_LAND_START, and both items map to the landing step" {
+        val a = home.copy(altitude = 40.m)
+        val plan = MissionPlanner.plan(
+            Mission("m", null, listOf(MissionStep.TakeOff(a, 15.deg), MissionStep.Waypoint(a), MissionStep.Land(a.copy(altitude = 0.m)))),
+            MissionFlavor.ARDUPLANE, home,
+        )
+        plan.items.map { it.command } shouldBe listOf(16, 22, 16, MavCommands.DO_LAND_START, 21)
+        plan.itemsOf(2) shouldBe listOf(3, 4)
+        plan.items[1].param1 shouldBe 15f
+        plan.items[4].param4.isNaN() shouldBe true
+    }
+
+    "PX4 flies loiter turns as a timed loiter, since it refuses NAV_LOITER_TURNS" {
+        val plan = MissionPlanner.plan(Mission("m", null, listOf(MissionStep.Loiter(home, 20.m, LoiterDuration.Turns(3)))), MissionFlavor.PX4, home)
+        val item = plan.items.single()
+        item.command shouldBe MavCommands.NAV_LOITER_TIME
+        item.param1 shouldBe (maxOf(2 * Math.PI * 20 / MissionPlanner.LOITER_TURN_SPEED_MPS, MissionPlanner.MIN_SECONDS_PER_TURN) * 3).toFloat()
+        item.param3 shouldBe 20f
+    }
+
+    "a change of altitude is a waypoint over the previous point on ArduCopter and PX4, NAV_CONTINUE_AND_CHANGE_ALT on ArduPlane" {
+        val a = home.offset(30.m, 0.m, 20.m).copy(altitude = 20.m)
+        val steps = listOf(MissionStep.TakeOff(a, 0.deg), MissionStep.ChangeAltitude(35.m))
+        for (flavor in listOf(MissionFlavor.ARDUCOPTER, MissionFlavor.PX4)) {
+            val wp = MissionReader.steps(MissionPlanner.plan(Mission("m", null, steps), flavor, home).items, flavor)[1] as MissionStep.Waypoint
+            (wp.location.distanceTo(a).meters < 0.02) shouldBe true
+            wp.location.altitude shouldBe 35.m
+        }
+        val plane = MissionPlanner.plan(Mission("m", null, steps), MissionFlavor.ARDUPLANE, home).items.last()
+        plane.command shouldBe MavCommands.NAV_CONTINUE_AND_CHANGE_ALT
+        plane.z shouldBe 35f
+    }
+
+    "a climb rate is a command keyed to the next item on PX4 and ArduPlane, a mission item on ArduCopter" {
+        val steps = listOf(MissionStep.TakeOff(home.copy(altitude = 10.m), 0.deg), MissionStep.ChangeSpeed(SpeedKind.CLIMB, 3.mps), MissionStep.Waypoint(home.copy(altitude = 10.m)), MissionStep.ChangeSpeed(SpeedKind.DESCENT, 1.mps))
+        val px4 = MissionPlanner.plan(Mission("m", null, steps), MissionFlavor.PX4, home)
+        px4.items.map { it.command } shouldBe listOf(22, 16)
+        px4.keyedCommands.map { Triple(it.seq, it.step, it.command.param1) } shouldBe listOf(Triple(1, 1, 2f), Triple(2, 3, 3f))
+        px4.itemsOf(1) shouldBe emptyList()
+        val copter = MissionPlanner.plan(Mission("m", null, steps), MissionFlavor.ARDUCOPTER, home)
+        copter.keyedCommands shouldBe emptyList()
+        copter.items.map { it.command } shouldBe listOf(16, 22, 178, 16, 178)
+    }
+})

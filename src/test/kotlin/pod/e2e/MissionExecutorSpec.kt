@@ -1,0 +1,224 @@
+package pod.e2e
+
+import io.dronefleet.mavlink.common.GlobalPositionInt
+import io.kotest.assertions.throwables.shouldThrow
+import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.collections.shouldContain
+import io.kotest.matchers.doubles.shouldBeLessThan
+import io.kotest.matchers.shouldBe
+import io.kotest.matchers.string.shouldContain
+import kotlin.math.abs
+import kotlin.math.roundToLong
+import kotlin.time.Duration.Companion.seconds
+import kotlinx.coroutines.CompletableDeferred
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.cancelAndJoin
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.flow.map
+import kotlinx.coroutines.flow.mapNotNull
+import kotlinx.coroutines.flow.take
+import kotlinx.coroutines.flow.toList
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.withTimeout
+import pod.core.mission.LoiterDuration
+import pod.core.mission.Mission
+import pod.core.mission.MissionStep
+import pod.core.mission.PrecisionLand
+import pod.core.mission.SpeedKind
+import pod.core.platform.MissionEvent
+import pod.core.platform.PlatformVehicle
+import pod.core.platform.SafeState
+import pod.core.units.Location
+import pod.core.units.deg
+import pod.core.units.m
+import pod.core.units.mps
+import pod.core.vehicle.LandedState
+import pod.core.vehicle.VehicleLost
+import pod.mavlink.MavlinkVehicle
+import pod.mavlink.command.CommandRejected
+import pod.mavlink.command.MavCommands
+import pod.mavlink.plan.MissionFlavor
+import pod.mavlink.plan.MissionPlanner
+import pod.mavlink.plan.MissionReader
+import pod.sim.SimFlavor
+import pod.sim.SimPlatform
+import pod.sim.SimVehicle
+
+/** One simulated vehicle of [flavor] on a fresh platform; everything stops afterwards. */
+private suspend fun withVehicle(
+    flavor: SimFlavor,
+    timeScale: Double = 20.0,
+    block: suspend CoroutineScope.(SimPlatform, PlatformVehicle, MavlinkVehicle, SimVehicle) -> Unit,
+) = coroutineScope {
+    val fleet = SimPlatform.start(this, listOf(flavor), timeScale = timeScale)
+    try {
+        val v = fleet.vehicles.value.single()
+        block(fleet, v, fleet.platform.mavlink(v), fleet.simulated.single())
+    } finally {
+        fleet.close()
+    }
+}
+
+/** [this] moved [north] and [east] metres at [height] above home, on the wire's 10⁻⁷° grid. */
+private fun Location.at(north: Int, east: Int, height: Double): Location =
+    offset(north.m, east.m).let { Location((it.latitude * 1e7).roundToLong() / 1e7, (it.longitude * 1e7).roundToLong() / 1e7, height.m) }
+
+/** Takeoff, two waypoints, a loiter of one turn, and a landing back home. */
+private fun copterSurvey(home: Location) = Mission(
+    "survey", null,
+    listOf(
+        MissionStep.TakeOff(home.at(0, 0, 15.0), 0.deg),
+        MissionStep.Waypoint(home.at(30, 0, 15.0)),
+        MissionStep.Waypoint(home.at(30, 30, 20.0)),
+        MissionStep.Loiter(home.at(30, 30, 20.0), 10.m, LoiterDuration.Turns(1)),
+        MissionStep.Land(home.at(0, 0, 0.0)),
+    ),
+)
+
+private fun planeCircuit(home: Location) = Mission(
+    "circuit", null,
+    listOf(
+        MissionStep.TakeOff(home.at(0, 0, 40.0), 15.deg),
+        MissionStep.Waypoint(home.at(0, 500, 60.0)),
+        MissionStep.Waypoint(home.at(600, 500, 60.0)),
+        MissionStep.Loiter(home.at(900, 0, 50.0), 80.m, LoiterDuration.Turns(1)),
+        MissionStep.Waypoint(home.at(500, 0, 30.0)),
+        MissionStep.Land(home.at(0, 0, 0.0)),
+    ),
+)
+
+/** Uploaded, started, each step started and done in order, completed. */
+private fun inOrder(steps: Int): List<MissionEvent> = listOf(MissionEvent.Uploaded(steps), MissionEvent.Started) +
+    (0 until steps).flatMap { listOf(MissionEvent.StepStarted(it), MissionEvent.StepDone(it)) } + MissionEvent.Completed
+
+class MissionExecutorSpec : StringSpec({
+
+    for ((flavor, scale) in listOf(SimFlavor.ARDUCOPTER to 20.0, SimFlavor.PX4 to 20.0, SimFlavor.ARDUPLANE to 30.0)) {
+        "a ${flavor.name} flies takeoff, waypoints, a loiter of turns and a landing to completion: landed, disarmed, every step reported in order" {
+            withVehicle(flavor, scale) { fleet, v, vehicle, sim ->
+                val home = sim.config.home
+                val mission = if (flavor == SimFlavor.ARDUPLANE) planeCircuit(home) else copterSurvey(home)
+                val events = ArrayList<MissionEvent>()
+                withTimeout(120.seconds) { fleet.fly(v, mission) { events += it } }
+                events shouldBe inOrder(mission.steps.size)
+                vehicle.telemetry.armed.value shouldBe false
+                vehicle.telemetry.landedState.value shouldBe LandedState.ON_GROUND
+                vehicle.telemetry.position.value!!.location.distanceTo(home).meters shouldBeLessThan (if (flavor == SimFlavor.ARDUPLANE) 100.0 else 3.0)
+                if (flavor != SimFlavor.PX4) sim.reachedItems.value.last() shouldBe sim.missionServer.list(pod.mavlink.mission.MissionType.MISSION).size - 1
+            }
+        }
+    }
+
+    for (flavor in listOf(SimFlavor.ARDUCOPTER, SimFlavor.PX4)) {
+        "a ${flavor.name} mission ending in an unlimited loiter completes once the vehicle loiters at the final point" {
+            withVehicle(flavor) { fleet, v, vehicle, sim ->
+                val home = sim.config.home
+                val end = home.at(30, 30, 20.0)
+                val mission = Mission("loiter", null, listOf(MissionStep.TakeOff(home.at(0, 0, 15.0), 0.deg), MissionStep.Waypoint(home.at(30, 0, 15.0)), MissionStep.Loiter(end, 0.m, LoiterDuration.Unlimited)))
+                val events = ArrayList<MissionEvent>()
+                withTimeout(60.seconds) { fleet.fly(v, mission) { events += it } }
+                events shouldBe inOrder(3)
+                val p = vehicle.telemetry.position.value!!
+                p.location.distanceTo(end).meters shouldBeLessThan 3.0
+                abs(p.relativeAltitude.meters - 20.0) shouldBeLessThan 3.0
+                vehicle.telemetry.armed.value shouldBe true
+                vehicle.telemetry.mode.value!!.name shouldBe if (flavor == SimFlavor.PX4) "AUTO.MISSION" else "AUTO"
+            }
+        }
+    }
+
+    for (flavor in listOf(SimFlavor.ARDUCOPTER, SimFlavor.PX4, SimFlavor.ARDUPLANE)) {
+        "a ${flavor.name} mission downloaded from the vehicle reads back as the same steps" {
+            withVehicle(flavor) { _, _, vehicle, sim ->
+                val home = sim.config.home
+                val missionFlavor = MissionFlavor.of(vehicle.identity.value)
+                val plane = flavor == SimFlavor.ARDUPLANE
+                val steps = listOf(
+                    MissionStep.TakeOff(home.at(0, 0, 30.0), (if (plane) 12 else 0).deg),
+                    MissionStep.ChangeSpeed(SpeedKind.GROUND, 6.5.mps),
+                    MissionStep.Waypoint(home.at(40, 10, 30.0), 5.seconds),
+                    MissionStep.StartCapture(0, 2.seconds),
+                    MissionStep.Loiter(home.at(60, 10, 35.0), (-25).m, if (flavor == SimFlavor.PX4) LoiterDuration.Time(20.seconds) else LoiterDuration.Turns(2)),
+                    MissionStep.StopCapture,
+                    MissionStep.Delay(3.seconds),
+                    MissionStep.Land(home.at(0, 0, 0.0), 90.deg, PrecisionLand.OPPORTUNISTIC),
+                )
+                vehicle.mission.upload(MissionPlanner.plan(Mission("m", null, steps), missionFlavor, home).items)
+                MissionReader.steps(vehicle.mission.download(), missionFlavor) shouldBe steps
+            }
+        }
+    }
+
+    "cancelling a flight mid-mission returns promptly, and HOLD then keeps the copter where it stopped, in LOITER" {
+        withVehicle(SimFlavor.ARDUCOPTER, timeScale = 5.0) { fleet, v, vehicle, sim ->
+            val home = sim.config.home
+            val mission = Mission("long", null, listOf(MissionStep.TakeOff(home.at(0, 0, 15.0), 0.deg), MissionStep.Waypoint(home.at(300, 0, 15.0)), MissionStep.Land(home.at(0, 0, 0.0))))
+            val events = MutableStateFlow<List<MissionEvent>>(emptyList())
+            val flight = launch { fleet.fly(v, mission) { e -> events.value += e } }
+            withTimeout(60.seconds) { events.first { MissionEvent.StepStarted(1) in it } }
+            withTimeout(1.seconds) { flight.cancelAndJoin() }
+            withTimeout(2.seconds) { fleet.makeSafe(v, SafeState.HOLD) }
+            vehicle.telemetry.mode.value!!.name shouldBe "LOITER"
+            val stopped = vehicle.telemetry.position.value!!.location
+            // Every GLOBAL_POSITION_INT, not the StateFlow, which skips repeats of a vehicle standing still.
+            val reports = vehicle.messages.mapNotNull { it.message as? GlobalPositionInt }.map { Location(it.lat() / 1e7, it.lon() / 1e7, (it.relativeAlt() / 1000.0).m) }
+            val settled = withTimeout(30.seconds) {
+                var last: Location? = null
+                reports.first { p -> (last?.let { it.distanceTo(p).meters < 0.2 } == true).also { last = p } }
+            }
+            settled.distanceTo(stopped).meters shouldBeLessThan 20.0
+            for (p in withTimeout(30.seconds) { reports.take(8).toList() }) {
+                p.distanceTo(settled).meters shouldBeLessThan 1.0
+                abs(p.altitude.meters - settled.altitude.meters) shouldBeLessThan 0.5
+            }
+            vehicle.telemetry.mode.value!!.name shouldBe "LOITER"
+            events.value shouldContain MissionEvent.Started
+        }
+    }
+
+    "RETURN_HOME after a cancelled flight switches to RTL and the copter lands at home" {
+        withVehicle(SimFlavor.ARDUCOPTER) { fleet, v, vehicle, sim ->
+            val home = sim.config.home
+            val mission = Mission("long", null, listOf(MissionStep.TakeOff(home.at(0, 0, 15.0), 0.deg), MissionStep.Waypoint(home.at(300, 0, 15.0)), MissionStep.Land(home.at(0, 0, 0.0))))
+            val started = CompletableDeferred<Unit>()
+            val flight = launch { fleet.fly(v, mission) { if (it == MissionEvent.StepStarted(1)) started.complete(Unit) } }
+            withTimeout(60.seconds) { started.await() }
+            withTimeout(1.seconds) { flight.cancelAndJoin() }
+            withTimeout(2.seconds) { fleet.makeSafe(v, SafeState.RETURN_HOME) }
+            vehicle.telemetry.mode.value!!.name shouldBe "RTL"
+            vehicle.action.awaitLanded(timeout = 60.seconds)
+            vehicle.telemetry.position.value!!.location.distanceTo(home).meters shouldBeLessThan 3.0
+        }
+    }
+
+    "a vehicle whose simulator stops mid-mission fails the flight with VehicleLost" {
+        withVehicle(SimFlavor.ARDUCOPTER, timeScale = 10.0) { fleet, v, _, sim ->
+            val home = sim.config.home
+            val mission = Mission("lost", null, listOf(MissionStep.TakeOff(home.at(0, 0, 15.0), 0.deg), MissionStep.Waypoint(home.at(300, 0, 15.0)), MissionStep.Land(home.at(0, 0, 0.0))))
+            val outcome = CompletableDeferred<Throwable?>()
+            val flight = launch {
+                outcome.complete(runCatching { fleet.fly(v, mission) { if (it == MissionEvent.StepStarted(1)) sim.stop() } }.exceptionOrNull())
+            }
+            val error = withTimeout(30.seconds) { outcome.await() }
+            flight.join()
+            (error is VehicleLost) shouldBe true
+            (error as VehicleLost).systemId shouldBe v.id
+        }
+    }
+
+    "a refused arm fails the flight with CommandRejected carrying the autopilot's reason" {
+        withVehicle(SimFlavor.ARDUCOPTER) { fleet, v, vehicle, sim ->
+            vehicle.params.write("BATT_ARM_VOLT", 99.0)
+            val home = sim.config.home
+            val mission = Mission("refused", null, listOf(MissionStep.TakeOff(home.at(0, 0, 15.0), 0.deg), MissionStep.Land(home.at(0, 0, 0.0))))
+            val events = ArrayList<MissionEvent>()
+            val e = shouldThrow<CommandRejected> { withTimeout(30.seconds) { fleet.fly(v, mission) { events += it } } }
+            e.command.command shouldBe MavCommands.COMPONENT_ARM_DISARM
+            e.statusTexts.joinToString() shouldContain "Battery"
+            events shouldBe listOf(MissionEvent.Uploaded(2))
+            vehicle.telemetry.armed.value shouldBe false
+        }
+    }
+})
