@@ -1,5 +1,6 @@
 package pod.core.engine
 
+import kotlinx.coroutines.currentCoroutineContext
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
@@ -39,7 +40,7 @@ public class Program internal constructor(
 
     /** Runs [task] and returns when it is done; throws what it failed with. */
     public suspend fun execute(task: Task) {
-        runner.run(task, vehicles = null, parent = 0)
+        runner.run(task, vehicles = null, parent = currentCoroutineContext()[RunningTask]?.id ?: 0)
     }
 
     /**

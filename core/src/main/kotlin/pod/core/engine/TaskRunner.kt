@@ -13,6 +13,13 @@ import pod.core.platform.PlatformVehicle
 import pod.core.platform.SafeState
 import pod.core.vehicle.ConnectionState
 import pod.core.vehicle.VehicleLost
+import kotlin.coroutines.AbstractCoroutineContextElement
+import kotlin.coroutines.CoroutineContext
+
+/** The task whose code is running: tasks a [Task.Action] executes become its children. */
+internal class RunningTask(val id: Int) : AbstractCoroutineContextElement(Key) {
+    companion object Key : CoroutineContext.Key<RunningTask>
+}
 
 /**
  * Runs task trees for one [Program]. Every task runs in the coroutine of the task that started it
@@ -23,7 +30,8 @@ internal class TaskRunner(private val engine: Engine, private val program: Progr
     suspend fun run(task: Task, vehicles: VehicleSet?, parent: Int) {
         val id = engine.nextTaskId()
         val label = task.label
-        engine.emit(EngineEvent.TaskStarted(engine.now(), id, parent, label, vehicles?.ids?.toList().orEmpty()))
+        val on = if (task is Task.Bound) task.vehicles else vehicles
+        engine.emit(EngineEvent.TaskStarted(engine.now(), id, parent, label, on?.ids?.toList().orEmpty()))
         try {
             body(task, vehicles, id)
         } catch (e: CancellationException) {
@@ -61,7 +69,7 @@ internal class TaskRunner(private val engine: Engine, private val program: Progr
             is Task.During -> withTimeoutOrNull(engine.wall(task.limit)) { run(task.task, vehicles, id) }
             is Task.Idle -> delay(engine.wall(task.time))
             is Task.Watch -> watch(task, vehicles, id)
-            is Task.Action -> task.block(program)
+            is Task.Action -> withContext(RunningTask(id)) { task.block(program) }
             is Task.Bound -> run(task.task, task.vehicles, id)
         }
     }

@@ -5,14 +5,16 @@ import pod.core.units.Location
 /**
  * A mission: a named, ordered list of [steps] that one vehicle flies, independent of any protocol.
  *
- * Every [Location] in a mission carries its altitude as a height above [home] (the launch point),
- * not above mean sea level; the MAVLink module sends them in the relative-altitude frame.
+ * Every [Location] in [steps] carries its altitude as a height above the vehicle's home (where it
+ * took off), not above mean sea level; the MAVLink module sends them in the relative-altitude frame.
+ * [home] is where the mission was planned from (relative moves start there); its altitude, when
+ * known, is above mean sea level. The vehicle keeps its own home: a mission does not move it.
  * Build one with the `mission { }` builder of pod-dsl, which checks every argument.
  */
 public data class Mission(
     /** A name for people and logs. */
     public val name: String,
-    /** The launch point the mission was planned from, or null to use the vehicle's own home. */
+    /** The launch point the mission was planned from (altitude above sea level, 0 if unknown), or null. */
     public val home: Location?,
     /** The steps in flying order. */
     public val steps: List<MissionStep>,

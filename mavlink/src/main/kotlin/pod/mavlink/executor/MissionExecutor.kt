@@ -103,7 +103,7 @@ public class MissionExecutor(
         if (!airborne && !flavor.isPx4 && mission.steps.firstOrNull { it !is MissionStep.Action } !is MissionStep.TakeOff) {
             throw MissionNotFlyable(mission.name, "on ${flavor.name} a mission flown from the ground must begin with a take-off")
         }
-        val plan = MissionPlanner.plan(mission, flavor, mission.home ?: awaitHome())
+        val plan = MissionPlanner.plan(mission, flavor, awaitHome())
         if (plan.items.size <= flavor.firstItem) throw MissionNotFlyable(mission.name, "it has no step ${flavor.name} flies as a mission item")
         _plan.value = plan
         val emit: suspend (MissionEvent) -> Unit = { event ->

@@ -27,7 +27,8 @@ import pod.mavlink.mission.MissionItem
  *   at [LOITER_TURN_SPEED_MPS] (at least [MIN_SECONDS_PER_TURN] per turn).
  * - ArduPlane and PX4 take only air and ground speed in a mission's DO_CHANGE_SPEED: a climb or
  *   descent rate is sent as a command when the vehicle reaches the next item.
- * - A mission that names its home sets it with DO_SET_HOME before the start.
+ * - The vehicle keeps its own home: heights are relative to it, and a mission's `home` is only where
+ *   its relative moves were planned from (its altitude may be unknown), so no DO_SET_HOME is sent.
  */
 public object MissionPlanner {
     /** MAV_FRAME_GLOBAL (altitude above mean sea level). */
@@ -43,12 +44,12 @@ public object MissionPlanner {
     public const val MIN_SECONDS_PER_TURN: Double = 10.0
 
     /**
-     * The plan for [mission] on [flavor]; [home] (altitude above sea level) fills ArduPilot's item 0
-     * when the mission names none. Throws IllegalArgumentException for an empty mission.
+     * The plan for [mission] on [flavor]; [home], the vehicle's own (altitude above sea level),
+     * fills ArduPilot's item 0. Throws IllegalArgumentException for an empty mission.
      */
     public fun plan(mission: Mission, flavor: MissionFlavor, home: Location): MissionPlan {
         require(mission.steps.isNotEmpty()) { "mission \"${mission.name}\" has no steps" }
-        val launch = mission.home ?: home
+        val launch = home
         val out = Builder(flavor)
         if (flavor.homeAtZero) out.add(null, MissionItem(0, FRAME_GLOBAL, MavCommands.NAV_WAYPOINT, x = launch.latE7, y = launch.lonE7, z = launch.altitude.meters.toFloat()))
         var last = launch.copy(altitude = pod.core.units.Distance.ZERO)
@@ -88,10 +89,7 @@ public object MissionPlanner {
                 else -> Unit
             }
         }
-        val beforeStart = mission.home?.let {
-            listOf(VehicleCommand(MavCommands.DO_SET_HOME, param5 = it.latitude, param6 = it.longitude, param7 = it.altitude.meters.toFloat(), frame = FRAME_GLOBAL_INT))
-        } ?: emptyList()
-        return out.build(mission.steps.size, beforeStart)
+        return out.build(mission.steps.size, emptyList())
     }
 
     private fun loiter(step: MissionStep.Loiter, flavor: MissionFlavor): MissionItem {
@@ -133,8 +131,6 @@ public object MissionPlanner {
     private val Location.latE7: Int get() = (latitude * 1e7).roundToLong().toInt()
     private val Location.lonE7: Int get() = (longitude * 1e7).roundToLong().toInt()
 
-    /** MAV_FRAME_GLOBAL_INT, for DO_SET_HOME as COMMAND_INT. */
-    private const val FRAME_GLOBAL_INT = 5
 
     /** Numbers items as they are added and remembers which step each belongs to. */
     private class Builder(private val flavor: MissionFlavor) {

@@ -3,6 +3,7 @@ package pod.mavlink.plan
 import io.kotest.assertions.withClue
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.collections.shouldBeSorted
+import io.kotest.matchers.doubles.plusOrMinus
 import io.kotest.matchers.shouldBe
 import io.kotest.property.Arb
 import io.kotest.property.arbitrary.arbitrary
@@ -79,17 +80,15 @@ class MissionPlanTest : StringSpec({
         }
     }
 
-    "ArduPilot's item 0 is the mission's home at its altitude above sea level, and DO_SET_HOME sets it before the start" {
-        val launch = Location(41.17, -8.59, 95.5.m)
-        val mission = Mission("m", launch, listOf(MissionStep.TakeOff(launch.copy(altitude = 10.m), 0.deg)))
+    "ArduPilot's item 0 is the vehicle's home at its altitude above sea level; the mission's planned home sends no DO_SET_HOME" {
+        val planned = Location(41.17, -8.59)
+        val mission = Mission("m", planned, listOf(MissionStep.TakeOff(planned.copy(altitude = 10.m), 0.deg)))
         val plan = MissionPlanner.plan(mission, MissionFlavor.ARDUCOPTER, home)
         plan.items[0].frame shouldBe 0
-        plan.items[0].z shouldBe 95.5f
-        plan.items[0].latitude shouldBe 41.17
-        plan.beforeStart.single().command shouldBe MavCommands.DO_SET_HOME
-        plan.beforeStart.single().param7 shouldBe 95.5f
-        MissionReader.mission("m", plan.items, MissionFlavor.ARDUCOPTER).home shouldBe launch
-        MissionPlanner.plan(mission.copy(home = null), MissionFlavor.ARDUCOPTER, home).beforeStart shouldBe emptyList()
+        plan.items[0].z shouldBe home.altitude.meters.toFloat()
+        plan.items[0].latitude shouldBe (home.latitude plusOrMinus 1e-7)
+        plan.beforeStart shouldBe emptyList()
+        MissionReader.mission("m", plan.items, MissionFlavor.ARDUCOPTER).home?.latitude shouldBe (home.latitude plusOrMinus 1e-7)
     }
 
     "an ArduPlane landing is preceded by DO_LAND_START, and both items map to the landing step" {
