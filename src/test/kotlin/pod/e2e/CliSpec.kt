@@ -5,6 +5,7 @@ import com.github.ajalt.clikt.core.parse
 import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.collections.shouldHaveSize
+import io.kotest.matchers.ints.shouldBeGreaterThanOrEqual
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import kotlinx.coroutines.Dispatchers
@@ -68,17 +69,19 @@ class CliSpec : StringSpec({
         }
     }
 
-    "pod demo finds every simulated vehicle, loses the one it stops, and says so" {
+    "pod demo runs Listing 4: two drones survey, the tired pair hands over to charged ones, and a map is written" {
         val out = Captured()
-        Pod(out).parse(listOf("demo", "--json", "--vehicles", "3", "--show-for", "0s"))
-        val found = out.lines.filter { it.contains("\"event\":\"found\"") }
-        found shouldHaveSize 3
-        found.map { it.field("sysid") }.toSet() shouldBe setOf("1", "2", "3")
-        val lost = out.lines.filter { it.contains("\"event\":\"lost\"") }
-        lost shouldHaveSize 1
-        lost.single().field("sysid") shouldBe "3"
+        val map = kotlin.io.path.createTempFile("pod-demo", ".svg")
+        Pod(out).parse(listOf("demo", "--json", "--for", "20m", "--time-scale", "40", "--map", map.toString()))
+        val picked = out.lines.filter { it.contains("\"event\":\"picked\"") }.map { it.field("vehicles") }
+        picked shouldHaveSize 4
+        picked.toSet() shouldBe setOf("1", "2", "3", "4")
+        out.lines.filter { it.contains("\"event\":\"flying\"") }.map { it.field("vehicle") }.toSet() shouldBe setOf("1", "2", "3", "4")
         out.lines.last().field("event") shouldBe "demo_done"
-        out.lines.last().field("connected") shouldBe "2"
+        out.lines.last().field("ok") shouldBe "true"
+        val svg = kotlin.io.path.Path(map.toString()).toFile().readText()
+        svg shouldContain "<svg"
+        Regex("<polyline").findAll(svg).count() shouldBeGreaterThanOrEqual 8 // planned and flown, 4 vehicles
     }
 
     "a bad connection string is a clear error with exit code 2" {

@@ -32,9 +32,9 @@ import kotlin.time.Duration.Companion.seconds
 internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo") {
     private val count by option("--vehicles", help = "how many simulated drones").int().restrictTo(2..20).default(4)
     private val timeScale by option("--time-scale", help = "how much faster than real time the vehicles live").double().restrictTo(1.0..200.0).default(40.0)
-    private val length by option("--for", help = "how long the fleet keeps two drones on survey, in vehicle time (e.g. 40m)")
+    private val length by option("--for", help = "how long the fleet keeps two drones on survey, in vehicle time (e.g. 30m)")
         .convert { text -> Duration.parseOrNull(text)?.takeIf { it.isPositive() } ?: fail(NOT_A_DURATION.format(text)) }
-        .default(40.minutes)
+        .default(30.minutes)
     private val map by option("--map", help = "where to write the SVG map").path().default(Path("pod-demo-map.svg"))
     private val json by option("--json", help = "JSON lines instead of text").flag()
 

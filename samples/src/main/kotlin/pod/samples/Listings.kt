@@ -1,6 +1,8 @@
 package pod.samples
 
+import pod.core.engine.PickTimeout
 import pod.core.engine.Program
+import pod.core.engine.Task
 import pod.core.engine.VehicleSet
 import pod.core.mission.Mission
 import pod.core.platform.PlatformVehicle
@@ -8,6 +10,7 @@ import pod.core.units.Distance
 import pod.core.units.Location
 import pod.core.units.m
 import pod.core.vehicle.LandedState
+import pod.dsl.action
 import pod.dsl.and
 import pod.dsl.concurrently
 import pod.dsl.during
@@ -17,7 +20,9 @@ import pod.dsl.pick
 import pod.dsl.then
 import pod.dsl.until
 import kotlin.time.Duration
+import kotlin.time.Duration.Companion.hours
 import kotlin.time.Duration.Companion.minutes
+import kotlin.time.Duration.Companion.seconds
 
 /*
  * The Dolphin report's listings, written with Pod's DSL. Each is a program: a suspend function on
@@ -97,10 +102,11 @@ suspend fun Program.listing3(): VehicleSet {
 }
 
 /**
- * Listing 4: keep [airborne] vehicles on survey for [duration]: each slot picks a charged vehicle
- * (battery ≥ [charged]), surveys until the battery is below [lowBattery], brings it home, releases
- * it and picks a replacement. When [duration] has passed, every vehicle still out holds and is
- * then brought home.
+ * Listing 4: keep [airborne] vehicles on survey for [duration]. Each slot picks a charged vehicle
+ * (battery ≥ [charged]) and keeps it surveying until its battery is below [lowBattery]; then, if a
+ * charged replacement is free, the replacement takes over the survey while the tired vehicle flies
+ * home alongside (Dolphin's `|`), otherwise the vehicle comes home first and the slot waits for
+ * one to charge. When [duration] has passed, every vehicle still out holds and is brought home.
  */
 suspend fun Program.listing4(
     duration: Duration = 45.minutes,
@@ -109,7 +115,7 @@ suspend fun Program.listing4(
     lowBattery: Double = 0.3,
 ): Unit {
     message("listing 4: keeping $airborne vehicles on survey for $duration")
-    val slots = (1..airborne).map { slot -> pod.dsl.action("slot $slot") { keepOnSurvey(slot, charged, lowBattery) } }
+    val slots = (1..airborne).map { slot -> action("slot $slot") { keepOnSurvey(slot, charged, lowBattery) } }
     execute(concurrently(slots) during duration)
     val out = vehicles.filter(::isOut)
     if (out.isNotEmpty()) {
@@ -119,22 +125,37 @@ suspend fun Program.listing4(
 }
 
 private suspend fun Program.keepOnSurvey(slot: Int, charged: Double, lowBattery: Double) {
+    var v = pick { count(1); battery(atLeast = charged); timeout(2.hours) }[0]
+    var homeward: Task? = null
     while (true) {
-        val picked = pick { count(1); battery(atLeast = charged); timeout(60.minutes) }
-        val v = picked[0]
-        message("slot $slot: ${v.name} takes off (battery ${(battery(v) * 100).toInt()} %)")
-        try {
-            while (battery(v) >= lowBattery) {
-                execute((surveyOf(v, north = 40.m, east = (slot - 1) * 150.m, length = 300.m, width = 120.m) on v) until { battery(v) < lowBattery })
+        message("slot $slot: ${v.name} takes the survey (battery ${percent(battery(v))})")
+        val current = v
+        val survey = action("survey loop ${current.name}") {
+            while (battery(current) >= lowBattery) {
+                execute((surveyOf(current, north = 40.m, east = (slot - 1) * 150.m, length = 300.m, width = 120.m) on current) until { battery(current) < lowBattery })
             }
-            if (isOut(v)) {
-                message("slot $slot: ${v.name} battery low (${(battery(v) * 100).toInt()} %), returning")
-                execute(landAtHome(v) on v)
-            }
-        } finally {
-            release(picked)
+        }
+        execute(homeward?.let { survey and it } ?: survey)
+        homeward = action("home ${current.name}") {
+            if (isOut(current)) execute(landAtHome(current) on current)
+            release(current)
+        }
+        val next = try {
+            pick { count(1); battery(atLeast = charged); timeout(5.seconds) }[0]
+        } catch (e: PickTimeout) {
+            null
+        }
+        message("slot $slot: ${current.name} battery low (${percent(battery(current))}), " + if (next != null) "${next.name} takes over" else "no charged vehicle: returning first")
+        if (next == null) {
+            execute(homeward)
+            homeward = null
+            v = pick { count(1); battery(atLeast = charged); timeout(2.hours) }[0]
+        } else {
+            v = next
         }
     }
 }
+
+private fun percent(fraction: Double) = "${(fraction * 100).toInt()} %"
 
 private operator fun Int.times(d: Distance): Distance = d * toDouble()

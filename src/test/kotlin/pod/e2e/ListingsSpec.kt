@@ -1,0 +1,131 @@
+package pod.e2e
+
+import io.kotest.assertions.throwables.shouldThrow
+import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.collections.shouldBeEmpty
+import io.kotest.matchers.collections.shouldContainAll
+import io.kotest.matchers.doubles.shouldBeLessThan
+import io.kotest.matchers.ints.shouldBeGreaterThanOrEqual
+import io.kotest.matchers.shouldBe
+import io.kotest.matchers.string.shouldContain
+import kotlinx.coroutines.cancelAndJoin
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.withTimeout
+import pod.core.engine.EngineEvent
+import pod.core.engine.PickTimeout
+import pod.core.platform.MissionEvent
+import pod.core.vehicle.LandedState
+import pod.core.vehicle.VehicleType
+import pod.dsl.pick
+import pod.samples.listing1
+import pod.samples.listing2
+import pod.samples.listing3
+import pod.samples.listing4
+import pod.samples.simulate
+import pod.sim.SimFlavor
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.minutes
+import kotlin.time.Duration.Companion.seconds
+
+private fun copters(n: Int) = List(n) { SimFlavor.ARDUCOPTER }
+
+/** For each survey flight: (vehicle, start, end) in vehicle time, from the engine's events. */
+private fun surveyFlights(events: List<EngineEvent>): List<Triple<Int, Duration, Duration>> {
+    val ends = events.mapNotNull {
+        when (it) {
+            is EngineEvent.TaskCompleted -> it.id to it.at
+            is EngineEvent.TaskCancelled -> it.id to it.at
+            is EngineEvent.TaskFailed -> it.id to it.at
+            else -> null
+        }
+    }.toMap()
+    return events.filterIsInstance<EngineEvent.Flying>().filter { it.mission.name.startsWith("survey") }
+        .map { Triple(it.vehicle, it.at, ends.getValue(it.task)) }
+}
+
+class ListingsSpec : StringSpec({
+    "Listing 2: the vehicle surveys until its battery is low, then comes home and lands instead of finishing" {
+        val (v, record) = simulate(copters(1), timeScale = 40.0) { sim ->
+            val v = listing2(lowBattery = 0.85)
+            val mav = sim.platform.mavlink(v)
+            withTimeout(10.seconds) { mav.telemetry.armed.first { !it } }
+            v
+        }
+        val surveys = record.events.filterIsInstance<EngineEvent.Flying>().filter { it.mission.name.startsWith("survey") }
+        surveys.size shouldBe 1
+        val surveyTask = surveys.single().task
+        record.events.filterIsInstance<EngineEvent.TaskCancelled>().map { it.id } shouldContainAll listOf(surveyTask)
+        record.events.filterIsInstance<EngineEvent.Mission>().filter { it.task == surveyTask }.map { it.event } shouldContainAll listOf(MissionEvent.Started)
+        record.events.filterIsInstance<EngineEvent.Mission>().filter { it.task == surveyTask }.map { it.event }.contains(MissionEvent.Completed) shouldBe false
+        val landing = record.events.filterIsInstance<EngineEvent.Flying>().single { it.mission.name.startsWith("land") }
+        record.events.filterIsInstance<EngineEvent.Mission>().filter { it.task == landing.task }.map { it.event } shouldContainAll listOf(MissionEvent.Completed)
+        v.landedState.value shouldBe LandedState.ON_GROUND
+        (v.battery.value!!.remaining!!) shouldBeLessThan 0.85
+        v.home.value!!.distanceTo(v.position.value!!.location).meters shouldBeLessThan 5.0
+    }
+
+    "Listing 3: two vehicles fly their surveys at the same time and both land back home" {
+        val (vehicles, record) = simulate(copters(2), timeScale = 40.0) { listing3() }
+        val flights = surveyFlights(record.events)
+        flights.map { it.first }.toSet() shouldBe vehicles.ids
+        val (a, b) = flights
+        (a.second < b.third && b.second < a.third) shouldBe true // the two flights overlap in time
+        record.events.filterIsInstance<EngineEvent.Mission>().count { it.event == MissionEvent.Completed } shouldBe 2
+        vehicles.forEach { it.landedState.value shouldBe LandedState.ON_GROUND }
+    }
+
+    "Listing 1: three camera vehicles survey three areas at once" {
+        val (vehicles, record) = simulate(copters(3), timeScale = 40.0) { listing1() }
+        vehicles.size shouldBe 3
+        record.events.filterIsInstance<EngineEvent.Mission>().count { it.event == MissionEvent.Completed } shouldBe 3
+        val flights = surveyFlights(record.events)
+        flights.maxOf { it.second } shouldBeLess flights.minOf { it.third }
+    }
+
+    "Listing 4: whenever a charged replacement exists, two vehicles are on survey" {
+        val length = 20.minutes
+        val (_, record) = simulate(copters(4), timeScale = 40.0) { listing4(duration = length) }
+        val flights = surveyFlights(record.events)
+        flights.map { it.first }.toSet() shouldBe setOf(1, 2, 3, 4) // the tired pair was replaced
+        val twoUp = flights.sortedBy { it.second }[1].second
+        val end = flights.maxOf { it.third }
+        // Sample every vehicle-second from when both slots first fly to the end of `during`:
+        // exactly two survey flights run, except within a few seconds of one ending (handover).
+        val gaps = generateSequence(twoUp) { it + 1.seconds }.takeWhile { it < end - 1.seconds }.filter { t ->
+            val running = flights.count { t >= it.second && t < it.third }
+            running != 2 && flights.none { t >= it.third && t - it.third < 10.seconds }
+        }.toList()
+        gaps.shouldBeEmpty()
+        record.events.filterIsInstance<EngineEvent.Message>().map { it.text }.filter { "takes over" in it }.size shouldBeGreaterThanOrEqual 2
+    }
+
+    "cancelling a program leaves every airborne vehicle holding within 2 s" {
+        simulate(copters(2), timeScale = 20.0) { sim ->
+            coroutineScope {
+                val program = launch { listing3() }
+                val mav = sim.vehicles.value.map { sim.platform.mavlink(it) }
+                withTimeout(60.seconds) {
+                    mav.forEach { v -> v.telemetry.position.first { (it?.relativeAltitude?.meters ?: 0.0) > 10.0 } }
+                }
+                withTimeout(2.seconds) {
+                    program.cancelAndJoin()
+                    mav.forEach { v -> v.telemetry.mode.first { it?.name == "LOITER" } }
+                }
+                mav.forEach { it.telemetry.landedState.value shouldBe LandedState.IN_AIR }
+            }
+        }
+    }
+
+    "a pick that can never be met fails after its timeout naming what it asked for" {
+        val error = shouldThrow<PickTimeout> {
+            simulate(copters(2), timeScale = 10.0) { pick { count(2); type(VehicleType.FIXED_WING); timeout(20.seconds) } }
+        }
+        error.message!! shouldContain "2 vehicles of type FIXED_WING"
+    }
+})
+
+private infix fun Duration.shouldBeLess(other: Duration) {
+    (this < other) shouldBe true
+}
