@@ -82,4 +82,17 @@ class ScriptRunSpec : StringSpec({
         run.exitCode shouldBe 2
         run.err.trim() shouldBe "error: no such script: no-such-script.main.kts"
     }
+
+    "the sample script flies Listing 2 under pod run: survey until the battery is low, then home and landed" {
+        val sample = File("../samples/scripts/low-battery-survey.main.kts").canonicalPath
+        val run = pod("run", sample, "--sim", "1", "--time-scale", "40")
+        run.exitCode shouldBe 0
+        val survey = run.out.indexOfFirst { it.contains("flies 'survey'") }
+        val low = run.out.indexOfFirst { it.contains("coming home") }
+        val landed = run.out.indexOfFirst { it.contains("copter-1 landed at home") }
+        (survey in 0 until low) shouldBe true
+        (low < landed) shouldBe true
+        run.out.any { it.contains("cancel survey on [copter-1]") } shouldBe true
+        run.out.any { it.contains("done   home on [copter-1]") } shouldBe true
+    }
 })

@@ -1,0 +1,52 @@
+package pod.launch
+
+import kotlinx.coroutines.CoroutineStart
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.runBlocking
+import pod.core.engine.Engine
+import pod.core.engine.Program
+import pod.mavlink.GroundStation
+import pod.mavlink.platform.MavlinkPlatform
+import pod.samples.EventLines
+import pod.samples.simulate
+import pod.sim.SimFlavor
+
+/**
+ * Runs [block] as a Dolphin program on the fleet `pod run` chose ([FleetChoice]: `--sim N` drones
+ * on loopback, or `--connect ADDRESS`), printing every task and vehicle event as it happens, and
+ * returns its result. Without `pod run` it flies four simulated drones in real time. Meant for
+ * `.main.kts` scripts and small programs' `main`:
+ *
+ * ```
+ * import pod.dsl.*
+ * import pod.launch.pod
+ * import pod.core.units.*
+ *
+ * pod {
+ *     val v = pick { count(1) }[0]
+ *     execute(mission("hop") { home(v.home.value!!); takeOff(20.m); move(north = 50.m); returnHomeAndLand() } on v)
+ * }
+ * ```
+ */
+fun <T> pod(choice: FleetChoice = FleetChoice.fromSystemProperties(), print: (String) -> Unit = ::println, block: suspend Program.() -> T): T =
+    runBlocking {
+        when (choice) {
+            is FleetChoice.Sim -> simulate(List(choice.count) { SimFlavor.ARDUCOPTER }, choice.timeScale, onLine = print) { block() }.first
+            is FleetChoice.Connect -> {
+                val station = GroundStation.open(choice.address, this)
+                try {
+                    val platform = MavlinkPlatform(station)
+                    val engine = Engine(platform)
+                    val lines = EventLines { id -> platform.vehicles.value.firstOrNull { it.id == id }?.name ?: "vehicle $id" }
+                    val printer = launch(start = CoroutineStart.UNDISPATCHED) { engine.events.collect { e -> lines.line(e)?.let(print) } }
+                    try {
+                        engine.run(block)
+                    } finally {
+                        printer.cancel()
+                    }
+                } finally {
+                    station.close()
+                }
+            }
+        }
+    }
