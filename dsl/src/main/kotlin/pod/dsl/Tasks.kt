@@ -55,6 +55,9 @@ public infix fun Task.on(vehicles: Iterable<PlatformVehicle>): Task = Task.Bound
 /** Run this task on [vehicle] (Dolphin `task @ vehicle`). */
 public infix fun Task.on(vehicle: PlatformVehicle): Task = Task.Bound(this, vehicle.asSet())
 
+/** The set of these two vehicles (Dolphin's vehicle-set `+`). */
+public operator fun PlatformVehicle.plus(other: PlatformVehicle): VehicleSet = VehicleSet(listOf(this, other))
+
 /** This mission as a task still to be bound with [on]; when cancelled, its vehicles do [onCancel]. */
 public fun Mission.task(onCancel: SafeState? = null): Task = Task.Fly(this, onCancel)
 

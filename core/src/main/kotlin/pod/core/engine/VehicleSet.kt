@@ -60,8 +60,5 @@ public class VehicleSet(vehicles: Iterable<PlatformVehicle>) : Iterable<Platform
     }
 }
 
-/** The set of these two vehicles. */
-public operator fun PlatformVehicle.plus(other: PlatformVehicle): VehicleSet = VehicleSet(listOf(this, other))
-
 /** The set holding just this vehicle. */
 public fun PlatformVehicle.asSet(): VehicleSet = VehicleSet(listOf(this))
