@@ -14,7 +14,7 @@ import io.kotest.property.checkAll
 class IntTrieMapTest : FunSpec({
     test("puts and removes of any keys, small, large and negative, behave as an ordinary map, and old versions stay as they were") {
         val keys = Arb.choice(Arb.int(0..40), Arb.int(0..5000), Arb.int())
-        checkAll(PropTestConfig(seed = 20261122, iterations = 300), Arb.list(Arb.pair(Arb.boolean(), keys), 0..200)) { ops ->
+        checkAll(PropTestConfig(seed = 20261122, iterations = 200), Arb.list(Arb.pair(Arb.boolean(), keys), 0..150)) { ops ->
             var trie = IntTrieMap.empty<String>()
             val model = mutableMapOf<Int, String>()
             val versions = mutableListOf<Pair<IntTrieMap<String>, Map<Int, String>>>()
