@@ -15,21 +15,11 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 
-quick=false
-if [ "${1:-}" = "--quick" ]; then quick=true; shift; fi
-
-if $quick; then
-  settings=(--warmup 2 --reps 3)
-else
-  settings=(--warmup 10 --reps 30)
-fi
+settings=(--warmup 10 --reps 30)
+if [ "${1:-}" = "--quick" ]; then settings=(--warmup 2 --reps 3); shift; fi
 
 results="$root/bench/target/results"
-echo "== machine"
-echo "cores: $(nproc); CPU: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//'); memory: $(free -g | awk '/^Mem:/ {print $2 " GiB"}')"
-echo "JDK: $(java -version 2>&1 | head -2 | tail -1)"
-echo "OS: $(. /etc/os-release 2>/dev/null && echo "$PRETTY_NAME"), kernel $(uname -r)"
-echo "commit: $(git rev-parse --short HEAD 2>/dev/null || echo '?')$(git diff --quiet 2>/dev/null || echo ' (with uncommitted changes)')"
+bench/machine-info.sh
 
 echo "== build"
 ./mvnw -B -ntp -o -Dkotlin.compiler.daemon=false -Pbench -pl bench -am package -DskipTests
