@@ -25,7 +25,9 @@ internal suspend fun <T : Any> awaitValue(fallback: StateFlow<*>, compute: Condi
         val scope = TrackingScope()
         scope.compute()?.let { return it }
         if (scope.seen.isEmpty()) scope.read(fallback)
-        merge(*scope.seen.map { (flow, value) -> flow.filter { it != value } }.toTypedArray()).first()
+        val changes = scope.seen.map { (flow, value) -> flow.filter { it != value } }
+        // merge() runs a channel and a coroutine per flow; most waits (a vehicle's link, one battery) read one flow.
+        (changes.singleOrNull() ?: merge(*changes.toTypedArray())).first()
     }
 }
 

@@ -33,7 +33,7 @@ public class Engine(
 ) {
     private val started = config.timeSource.markNow()
     private val _events = MutableSharedFlow<EngineEvent>(extraBufferCapacity = Int.MAX_VALUE)
-    private val _busy = MutableStateFlow<Map<Int, String>>(emptyMap())
+    private val _busy = MutableStateFlow(IntTrieMap.empty<String>())
     private val _revision = MutableStateFlow(0L)
     private val taskIds = MutableStateFlow(0)
 
@@ -85,13 +85,13 @@ public class Engine(
         var holder: String? = null
         _busy.update { held ->
             holder = held[vehicleId]
-            if (holder != null) held else held + (vehicleId to task)
+            if (holder != null) held else held.put(vehicleId, task)
         }
         holder?.let { throw VehicleBusy(vehicleId, task, it) }
     }
 
     internal fun unclaim(vehicleId: Int) {
-        _busy.update { it - vehicleId }
+        _busy.update { it.remove(vehicleId) }
         _revision.update { it + 1 }
     }
 }

@@ -4,6 +4,7 @@ import kotlinx.coroutines.currentCoroutineContext
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
+import kotlinx.coroutines.flow.getAndUpdate
 import kotlinx.coroutines.flow.update
 import kotlinx.coroutines.withTimeoutOrNull
 import pod.core.platform.Platform
@@ -48,24 +49,31 @@ public class Program internal constructor(
      * this program; throws [PickTimeout] naming the request when its timeout passes first.
      */
     public suspend fun pick(request: PickRequest): VehicleSet {
-        val taken = withTimeoutOrNull(engine.wall(request.timeout)) {
-            while (true) {
+        // Noted outside the timeout block: the timeout may fire after take() succeeded and before the
+        // block returns, and vehicles this program now holds must be returned, not reported as a timeout.
+        var taken: VehicleSet? = null
+        withTimeoutOrNull(engine.wall(request.timeout)) {
+            while (taken == null) {
                 val candidates = awaitValue(engine.revision) { candidates(request).takeIf { it.size >= request.count }?.take(request.count) }
-                if (take(candidates.map { it.id })) return@withTimeoutOrNull VehicleSet(candidates)
+                if (take(candidates.map { it.id })) taken = VehicleSet(candidates)
             }
-            @Suppress("UNREACHABLE_CODE")
-            null
-        } ?: throw PickTimeout(request, candidates(request).size, request.timeout)
-        engine.emit(EngineEvent.Picked(engine.now(), taken.ids.toList()))
-        return taken
+        }
+        val picked = taken ?: throw PickTimeout(request, candidates(request).size, request.timeout)
+        engine.emit(EngineEvent.Picked(engine.now(), picked.ids.toList()))
+        return picked
     }
 
     /** Gives [vehicles] back; they must have been picked by this program. */
     public fun release(vehicles: Iterable<PlatformVehicle>) {
         val ids = vehicles.mapTo(LinkedHashSet()) { it.id }
-        val missing = ids - _picked.value
+        // Checked and removed in one step: two concurrent releases of one vehicle must not both pass
+        // the check, or the second would drop another program's pick of it from pickedByAny.
+        var missing = emptySet<Int>()
+        _picked.update { held ->
+            missing = ids - held
+            if (missing.isEmpty()) held - ids else held
+        }
         if (missing.isNotEmpty()) throw NotPicked(missing)
-        _picked.update { it - ids }
         engine.pickedByAny.update { it - ids }
         engine.emit(EngineEvent.Released(engine.now(), ids.toList()))
     }
@@ -90,9 +98,8 @@ public class Program internal constructor(
     }
 
     internal fun releaseAll() {
-        val held = _picked.value
+        val held = _picked.getAndUpdate { emptySet() }
         if (held.isEmpty()) return
-        _picked.value = emptySet()
         engine.pickedByAny.update { it - held }
         engine.emit(EngineEvent.Released(engine.now(), held.toList()))
     }
