@@ -6,10 +6,10 @@ import kotlin.time.Duration
 
 /**
  * Something that happened in a running program, in the order it happened. [at] is the time since
- * the program started, in vehicle time (wall time × the platform's time scale).
+ * the [Engine] was made, in vehicle time (wall time × the platform's time scale).
  */
 public sealed interface EngineEvent {
-    /** When, since the program started, in vehicle time. */
+    /** When, since the engine was made, in vehicle time. */
     public val at: Duration
 
     /** A task started; [id] numbers tasks in the order they start, [parent] is its parent's id (0 for none). */

@@ -64,6 +64,10 @@ public sealed class Task {
         /** The when-then branches. */
         public val branches: List<Branch>,
     ) : Task() {
+        init {
+            require(branches.isNotEmpty()) { "allOf: give at least one branch" }
+        }
+
         override val label: String get() = "allOf"
     }
 
@@ -72,6 +76,10 @@ public sealed class Task {
         /** The when-then branches. */
         public val branches: List<Branch>,
     ) : Task() {
+        init {
+            require(branches.isNotEmpty()) { "oneOf: give at least one branch" }
+        }
+
         override val label: String get() = "oneOf"
     }
 
