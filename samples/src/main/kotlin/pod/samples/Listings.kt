@@ -39,15 +39,19 @@ internal fun homeOf(v: PlatformVehicle): Location {
 /** True unless [v] reports being on the ground. */
 internal fun isOut(v: PlatformVehicle): Boolean = v.landedState.value != LandedState.ON_GROUND
 
-/** A lawn-mower survey of a [length] × [width] rectangle whose south-west corner is [north]/[east] of [v]'s home. */
-internal fun surveyOf(v: PlatformVehicle, north: Distance, east: Distance, length: Distance = 120.m, width: Distance = 80.m, height: Distance = 30.m): Mission {
+/**
+ * A lawn-mower survey of a [length] × [width] rectangle whose south-west corner is [north]/[east] of
+ * [v]'s home; it ends back home on the ground, or over the last track when not [land]ing (flown
+ * again from the air, its take-off is already done).
+ */
+internal fun surveyOf(v: PlatformVehicle, north: Distance, east: Distance, length: Distance = 120.m, width: Distance = 80.m, height: Distance = 30.m, land: Boolean = true): Mission {
     val home = homeOf(v)
     return mission("survey ${v.name}") {
         home(home)
         takeOff(height)
         moveFromHome(north, east, height)
         surveyArea(length, width, spacing = 20.m)
-        returnHomeAndLand()
+        if (land) returnHomeAndLand()
     }
 }
 
@@ -103,7 +107,8 @@ suspend fun Program.listing3(): VehicleSet {
 
 /**
  * Listing 4: keep [airborne] vehicles on survey for [duration]. Each slot picks a charged vehicle
- * (battery ≥ [charged]) and keeps it surveying until its battery is below [lowBattery]; then, if a
+ * (battery ≥ [charged]) and keeps it surveying, round after round without landing, until its
+ * battery is below [lowBattery]; then, if a
  * charged replacement is free, the replacement takes over the survey while the tired vehicle flies
  * home alongside (Dolphin's `|`), otherwise the vehicle comes home first and the slot waits for
  * one to charge. When [duration] has passed, every vehicle still out holds and is brought home.
@@ -132,7 +137,7 @@ private suspend fun Program.keepOnSurvey(slot: Int, charged: Double, lowBattery:
         val current = v
         val survey = action("survey loop ${current.name}") {
             while (battery(current) >= lowBattery) {
-                execute((surveyOf(current, north = 40.m, east = (slot - 1) * 150.m, length = 300.m, width = 120.m) on current) until { battery(current) < lowBattery })
+                execute((surveyOf(current, north = 40.m, east = (slot - 1) * 150.m, length = 300.m, width = 120.m, land = false) on current) until { battery(current) < lowBattery })
             }
         }
         execute(homeward?.let { survey and it } ?: survey)
