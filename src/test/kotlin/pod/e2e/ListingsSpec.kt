@@ -18,7 +18,16 @@ import pod.core.engine.PickTimeout
 import pod.core.platform.MissionEvent
 import pod.core.vehicle.LandedState
 import pod.core.vehicle.VehicleType
+import pod.core.platform.PlatformVehicle
+import pod.core.units.m
+import pod.core.vehicle.VehicleLost
+import pod.dsl.ignore
+import pod.dsl.mission
+import pod.dsl.on
 import pod.dsl.pick
+import pod.dsl.then
+import pod.dsl.watch
+import pod.mavlink.executor.MissionNotFlyable
 import pod.samples.listing1
 import pod.samples.listing2
 import pod.samples.listing3
@@ -30,6 +39,14 @@ import kotlin.time.Duration.Companion.minutes
 import kotlin.time.Duration.Companion.seconds
 
 private fun copters(n: Int) = List(n) { SimFlavor.ARDUCOPTER }
+
+/** A short hop: take off, 40 m north, land back home. */
+private fun surveyFrom(v: PlatformVehicle) = mission("hop ${v.name}") {
+    home(v.home.value!!)
+    takeOff(20.m)
+    move(north = 40.m)
+    returnHomeAndLand()
+}
 
 /** For each survey flight: (vehicle, start, end) in vehicle time, from the engine's events. */
 private fun surveyFlights(events: List<EngineEvent>): List<Triple<Int, Duration, Duration>> {
@@ -116,6 +133,34 @@ class ListingsSpec : StringSpec({
                 mav.forEach { it.telemetry.landedState.value shouldBe LandedState.IN_AIR }
             }
         }
+    }
+
+    "a vehicle that stops sending heartbeats fails its task, and the program, with VehicleLost" {
+        val lost = shouldThrow<VehicleLost> {
+            simulate(copters(1), timeScale = 20.0) { sim ->
+                val v = pick { count(1) }[0]
+                coroutineScope {
+                    launch {
+                        sim.platform.mavlink(v).telemetry.position.first { (it?.relativeAltitude?.meters ?: 0.0) > 10.0 }
+                        sim[v.id].stop()
+                    }
+                    execute(surveyFrom(v) on v)
+                }
+            }
+        }
+        lost.systemId shouldBe 1
+    }
+
+    "watch … onError ignore lets a program go on past a mission the autopilot cannot fly" {
+        val (_, record) = simulate(copters(1), timeScale = 20.0) {
+            val v = pick { count(1) }[0]
+            val home = v.home.value!!
+            val noTakeOff = mission("no take-off") { home(home); goPos(home.latitude, home.longitude, 20.m) }
+            execute((watch(noTakeOff on v) onError ignore) then (surveyFrom(v) on v))
+        }
+        val failed = record.events.filterIsInstance<EngineEvent.TaskFailed>().single { it.label == "no take-off" }
+        (failed.error is MissionNotFlyable) shouldBe true
+        record.events.filterIsInstance<EngineEvent.Mission>().count { it.event == MissionEvent.Completed } shouldBe 1
     }
 
     "a pick that can never be met fails after its timeout naming what it asked for" {
