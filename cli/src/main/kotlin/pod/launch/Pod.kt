@@ -1,13 +1,11 @@
 package pod.launch
 
-import kotlinx.coroutines.CoroutineStart
-import kotlinx.coroutines.launch
 import kotlinx.coroutines.runBlocking
 import pod.core.engine.Engine
 import pod.core.engine.Program
 import pod.mavlink.GroundStation
 import pod.mavlink.platform.MavlinkPlatform
-import pod.samples.EventLines
+import pod.samples.runShowing
 import pod.samples.simulate
 import pod.sim.SimFlavor
 
@@ -36,14 +34,7 @@ fun <T> pod(choice: FleetChoice = FleetChoice.fromSystemProperties(), print: (St
                 val station = GroundStation.open(choice.address, this)
                 try {
                     val platform = MavlinkPlatform(station)
-                    val engine = Engine(platform)
-                    val lines = EventLines { id -> platform.vehicles.value.firstOrNull { it.id == id }?.name ?: "vehicle $id" }
-                    val printer = launch(start = CoroutineStart.UNDISPATCHED) { engine.events.collect { e -> lines.line(e)?.let(print) } }
-                    try {
-                        engine.run(block)
-                    } finally {
-                        printer.cancel()
-                    }
+                    Engine(platform).runShowing({ id -> platform.vehicles.value.firstOrNull { it.id == id }?.name ?: "vehicle $id" }, onLine = print, block = block)
                 } finally {
                     station.close()
                 }

@@ -1,10 +1,6 @@
 package pod.samples
 
-import kotlinx.coroutines.CoroutineStart
 import kotlinx.coroutines.coroutineScope
-import kotlinx.coroutines.flow.takeWhile
-import kotlinx.coroutines.launch
-import kotlinx.coroutines.withTimeoutOrNull
 import pod.core.engine.Engine
 import pod.core.engine.EngineConfig
 import pod.core.engine.EngineEvent
@@ -16,7 +12,6 @@ import pod.sim.SimFlavor
 import pod.sim.SimPlatform
 import java.nio.file.Path
 import kotlin.io.path.writeText
-import kotlin.time.Duration.Companion.seconds
 
 /** What [simulate] saw: every engine event, the missions each vehicle flew, the tracks they flew. */
 class SimRecord(
@@ -40,37 +35,25 @@ suspend fun <T> simulate(
     onLine: (String) -> Unit = {},
     onEvent: (EngineEvent) -> Unit = {},
     map: Path? = null,
-    configure: (SimPlatform) -> Unit = {},
     program: suspend Program.(SimPlatform) -> T,
 ): Pair<T, SimRecord> = coroutineScope {
     val sim = SimPlatform.start(this, flavors, timeScale)
     try {
-        configure(sim)
         val names = sim.platform.vehicles.value.associate { it.id to it.name }
-        val lines = EventLines { names[it] ?: "vehicle $it" }
         val events = mutableListOf<EngineEvent>()
-        val engine = Engine(sim, EngineConfig())
-        val printer = launch(start = CoroutineStart.UNDISPATCHED) {
-            engine.events.takeWhile { !(it is EngineEvent.Message && it.text == END) }.collect { event ->
-                synchronized(events) { events += event }
-                onEvent(event)
-                lines.line(event)?.let(onLine)
-            }
-        }
         val tracks = Tracks()
         val recording = tracks.record(sim, this)
         try {
-            val result = engine.run {
-                try {
-                    program(sim)
-                } finally {
-                    message(END)
-                }
-            }
+            val result = Engine(sim, EngineConfig()).runShowing(
+                names = { names[it] ?: "vehicle $it" },
+                onLine = onLine,
+                onEvent = { event ->
+                    synchronized(events) { events += event }
+                    onEvent(event)
+                },
+            ) { program(sim) }
             result to SimRecord(synchronized(events) { events.toList() }, flightsOf(events), tracks.snapshot())
         } finally {
-            withTimeoutOrNull(5.seconds) { printer.join() }
-            printer.cancel()
             recording.cancel()
             if (map != null) map.writeText(svg(flightsOf(events), tracks.snapshot(), "Pod on ${flavors.size} simulated vehicles"))
         }
@@ -78,8 +61,6 @@ suspend fun <T> simulate(
         sim.close()
     }
 }
-
-private const val END = "\u0000end of program"
 
 private fun flightsOf(events: List<EngineEvent>): List<Pair<Int, Mission>> =
     synchronized(events) { events.filterIsInstance<EngineEvent.Flying>().map { it.vehicle to it.mission } }
