@@ -1,25 +1,18 @@
 package pod.e2e
 
 import io.kotest.core.spec.style.StringSpec
-import io.kotest.matchers.collections.shouldContainExactlyInAnyOrder
-import io.kotest.matchers.comparables.shouldBeGreaterThanOrEqualTo
-import io.kotest.matchers.doubles.plusOrMinus
+import io.kotest.matchers.collections.shouldBeEmpty
+import io.kotest.matchers.maps.shouldBeEmpty
 import io.kotest.matchers.shouldBe
-import kotlinx.coroutines.CoroutineStart
-import kotlinx.coroutines.async
 import kotlinx.coroutines.coroutineScope
-import kotlinx.coroutines.flow.filterIsInstance
+import kotlinx.coroutines.flow.filterNotNull
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.withTimeout
-import pod.core.vehicle.Autopilot
-import pod.core.vehicle.ConnectionState
-import pod.core.vehicle.VehicleType
-import pod.mavlink.FleetEvent
 import pod.mavlink.GroundStation
 import pod.mavlink.GroundStationConfig
+import pod.sim.MessageIds
 import pod.sim.SimVehicle
 import pod.sim.SimVehicleConfig
-import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 
 class StreamRateSpec : StringSpec({
@@ -30,13 +23,43 @@ class StreamRateSpec : StringSpec({
             val gcs = GroundStation.open("udpin://127.0.0.1:0", this, GroundStationConfig(streamRates = wanted))
             val sim = SimVehicle(SimVehicleConfig(systemId = 9, gcs = "udpout://127.0.0.1:${gcs.link.localPort}"))
             try {
-                sim.streamRates.value[33] shouldBe 2.0
+                // An ArduCopter streams nothing but HEARTBEAT until asked.
+                sim.streamRates.value.shouldBeEmpty()
                 sim.start(this)
                 val rates = withTimeout(10.seconds) { sim.streamRates.first { it[33] == 10.0 && it[1] == 0.5 } }
-                rates[30] shouldBe SimVehicleConfig.DEFAULT_STREAM_RATES[30] // not asked, unchanged
+                rates[30] shouldBe null // not asked, still off
             } finally {
                 sim.stop()
                 gcs.close()
+            }
+        }
+    }
+
+    "an ArduCopter that is asked for nothing sends nothing but HEARTBEAT; the default station asks for what a mission needs, MISSION_CURRENT and the home included" {
+        coroutineScope {
+            val silent = GroundStation.open("udpin://127.0.0.1:0", this, GroundStationConfig(streamRates = emptyMap(), requestHome = false))
+            val asking = GroundStation.open("udpin://127.0.0.1:0", this)
+            val quiet = SimVehicle(SimVehicleConfig(systemId = 7, gcs = "udpout://127.0.0.1:${silent.link.localPort}"))
+            val asked = SimVehicle(SimVehicleConfig(systemId = 8, gcs = "udpout://127.0.0.1:${asking.link.localPort}"))
+            try {
+                quiet.start(this)
+                asked.start(this)
+                val heard = withTimeout(10.seconds) { silent.vehicles.first { 7 in it } }.getValue(7)
+                val found = withTimeout(10.seconds) { asking.vehicles.first { 8 in it } }.getValue(8)
+                withTimeout(10.seconds) { found.telemetry.home.filterNotNull().first() }
+                withTimeout(10.seconds) { found.telemetry.missionCurrent.filterNotNull().first() }
+                val rates = withTimeout(10.seconds) { asked.streamRates.first { MessageIds.MISSION_CURRENT in it && MessageIds.GLOBAL_POSITION_INT in it } }
+                rates.keys shouldBe GroundStationConfig.DEFAULT_STREAM_RATES.keys
+                // Three heartbeats later the one asked for nothing has still sent nothing else.
+                withTimeout(10.seconds) { heard.messages.filterNotNull().first { it.frame.messageId == 0 && heard.telemetry.linkQuality.value.received >= 4 } }
+                heard.telemetry.position.value shouldBe null
+                heard.telemetry.home.value shouldBe null
+                quiet.streamRates.value.keys.toList().shouldBeEmpty()
+            } finally {
+                quiet.stop()
+                asked.stop()
+                silent.close()
+                asking.close()
             }
         }
     }

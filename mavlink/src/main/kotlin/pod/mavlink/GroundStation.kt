@@ -1,7 +1,5 @@
 package pod.mavlink
 
-import io.dronefleet.mavlink.common.CommandLong
-import io.dronefleet.mavlink.common.MavCmd
 import io.dronefleet.mavlink.minimal.Heartbeat
 import io.dronefleet.mavlink.minimal.MavAutopilot
 import io.dronefleet.mavlink.minimal.MavState
@@ -24,7 +22,6 @@ import kotlinx.coroutines.job
 import kotlinx.coroutines.launch
 import pod.core.vehicle.ConnectionState
 import pod.core.vehicle.VehicleIdentity
-import pod.mavlink.codec.FrameDecoder
 import pod.mavlink.codec.FrameEncoder
 import pod.mavlink.codec.MavFrame
 import pod.mavlink.codec.MessageCodec
@@ -32,7 +29,6 @@ import pod.mavlink.link.LinkException
 import pod.mavlink.link.LinkPeer
 import pod.mavlink.link.MavlinkLink
 import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.Duration.Companion.seconds
 
 /**
  * One ground station on one link: it parses and routes every frame, sends our HEARTBEAT, finds
@@ -61,13 +57,15 @@ public class GroundStation private constructor(
     )
     private val encoder = FrameEncoder(codec)
     private val sequences = SequenceNumbers()
-    private val decoders = HashMap<LinkPeer, FrameDecoder>()
+    private val decoders = PeerDecoders(config.maxPeers, codec)
     private val _vehicles = MutableStateFlow<Map<Int, MavlinkVehicle>>(emptyMap())
     private val _events = MutableSharedFlow<FleetEvent>(extraBufferCapacity = 256)
     private val _stats = MutableStateFlow(LinkStats())
     private val _linkError = MutableStateFlow<LinkException?>(null)
-    private var unrouted = 0L
-    private var handlerErrors = 0L
+    @Volatile private var unrouted = 0L
+    @Volatile private var handlerErrors = 0L
+    @Volatile private var trackingErrors = 0L
+    private val streamRequests = StreamRequests(scope, config)
 
     /** Vehicles heard so far by system id, lost ones included (see [MavlinkVehicle.connection]). */
     public val vehicles: StateFlow<Map<Int, MavlinkVehicle>> = _vehicles.asStateFlow()
@@ -99,11 +97,16 @@ public class GroundStation private constructor(
             val tick = minOf(config.lostAfter / 4, 250.milliseconds)
             while (isActive) {
                 delay(tick)
-                checkSilence()
-                publishStats()
+                // Each in its own guard: whatever goes wrong in one pass (stats of a decoder in use,
+                // a collector that throws) must not end the loop that marks vehicles lost.
+                guarded { checkSilence() }
+                guarded { publishStats() }
             }
         }
     }
+
+    /** How many source addresses have a frame decoder now (at most [GroundStationConfig.maxPeers]). */
+    internal val peerCount: Int get() = decoders.size
 
     /** Sends [message] to [vehicle] (to the address it was heard from, when listening). */
     public suspend fun sendTo(vehicle: MavlinkVehicle, message: Any) {
@@ -136,9 +139,20 @@ public class GroundStation private constructor(
     private fun encode(message: Any): ByteArray =
         encoder.encode(message, config.systemId, config.componentId, sequences.next(config.systemId, config.componentId), config.mavlinkVersion)
 
-    // Runs in the single receive coroutine: decoders and routing state need no locking.
+    private inline fun guarded(block: () -> Unit) {
+        try {
+            block()
+        } catch (e: kotlinx.coroutines.CancellationException) {
+            throw e
+        } catch (e: Exception) {
+            trackingErrors++
+        }
+    }
+
+    // Runs in the single receive coroutine: routing state needs no locking; the decoders are
+    // shared with the tracking loop's stats and guard themselves.
     private fun onBytes(peer: LinkPeer, bytes: ByteArray) {
-        val decoder = decoders.getOrPut(peer) { FrameDecoder(codec) }
+        val decoder = decoders.decoderFor(peer)
         decoder.feed(bytes) { frame ->
             try {
                 route(peer, frame)
@@ -166,7 +180,7 @@ public class GroundStation private constructor(
                 _vehicles.value = _vehicles.value + (frame.systemId to vehicle)
                 vehicle.onFrame(frame, message)
                 _events.tryEmit(FleetEvent.Found(vehicle))
-                requestStreams(vehicle)
+                streamRequests.restart(vehicle)
                 return
             }
             if (vehicle != null && frame.componentId == vehicle.identity.value.componentId &&
@@ -175,7 +189,7 @@ public class GroundStation private constructor(
                 vehicle.peer = peer
                 vehicle.onFrame(frame, message)
                 _events.tryEmit(FleetEvent.Regained(vehicle))
-                requestStreams(vehicle)
+                streamRequests.restart(vehicle)
                 return
             }
         }
@@ -189,6 +203,7 @@ public class GroundStation private constructor(
 
     private fun checkSilence() {
         for (vehicle in _vehicles.value.values) {
+            guarded { vehicle.flushStatusTexts() }
             val silence = vehicle.lastHeartbeat.elapsedNow()
             if (silence > config.lostAfter &&
                 vehicle._connection.compareAndSet(ConnectionState.CONNECTED, ConnectionState.LOST)
@@ -199,46 +214,8 @@ public class GroundStation private constructor(
     }
 
     private fun publishStats() {
-        var frames = 0L
-        var badCrc = 0L
-        var skipped = 0L
-        var unknown = 0L
-        // Plain reads of counters the receive coroutine writes: a slightly stale total is fine here.
-        for (decoder in decoders.values.toList()) {
-            frames += decoder.stats.frames
-            badCrc += decoder.stats.badCrc
-            skipped += decoder.stats.skippedBytes
-            unknown += decoder.stats.unknownMessages
-        }
-        _stats.value = LinkStats(frames, badCrc, skipped, unknown, unrouted, handlerErrors)
-    }
-
-    /**
-     * Asks [vehicle] for the configured telemetry rates, and asks again (three tries, 2 s apart)
-     * while no position has arrived, since these commands travel unacknowledged here.
-     */
-    private fun requestStreams(vehicle: MavlinkVehicle) {
-        if (config.streamRates.isEmpty()) return
-        scope.launch(CoroutineName("stream-rates-${vehicle.systemId}")) {
-            repeat(3) {
-                val id = vehicle.identity.value
-                for ((messageId, hz) in config.streamRates) {
-                    vehicle.send(
-                        CommandLong.builder()
-                            .targetSystem(id.systemId)
-                            .targetComponent(id.componentId)
-                            .command(MavCmd.MAV_CMD_SET_MESSAGE_INTERVAL)
-                            .param1(messageId.toFloat())
-                            .param2((1_000_000.0 / hz).toFloat())
-                            .build(),
-                    )
-                }
-                delay(2.seconds)
-                if (vehicle.telemetry.position.value != null ||
-                    vehicle.connection.value == ConnectionState.LOST
-                ) return@launch
-            }
-        }
+        val t = decoders.totals()
+        _stats.value = LinkStats(t.frames, t.badCrc, t.skippedBytes, t.unknownMessages, unrouted, handlerErrors, t.evictions, trackingErrors)
     }
 
     private fun gcsHeartbeat(): Heartbeat = Heartbeat.builder()
@@ -288,4 +265,8 @@ public data class LinkStats(
     public val unrouted: Long = 0,
     /** Frames whose handling failed (nonsense field values); counted and skipped. */
     public val handlerErrors: Long = 0,
+    /** Source addresses whose decoder was dropped to stay within [GroundStationConfig.maxPeers]. */
+    public val evictedPeers: Long = 0,
+    /** Passes of the connection-tracking loop that failed and were skipped (the loop goes on). */
+    public val trackingErrors: Long = 0,
 )

@@ -6,8 +6,10 @@ import kotlin.time.Duration.Companion.seconds
 /**
  * How a [GroundStation] presents itself and tracks vehicles.
  *
- * @property streamRates message id → rate in Hz asked of every vehicle when it is found, with
- *   MAV_CMD_SET_MESSAGE_INTERVAL (ArduPilot streams nothing but HEARTBEAT until asked).
+ * @property streamRates message id → rate in Hz asked of every vehicle when it is found (and found
+ *   again), with MAV_CMD_SET_MESSAGE_INTERVAL: ArduCopter streams nothing but HEARTBEAT until asked.
+ *   Asked again every [streamRequestInterval] while a message has not arrived, at most
+ *   [streamRequestRounds] times.
  */
 public data class GroundStationConfig(
     /** Our MAVLink system id (255 is the usual ground station). */
@@ -21,6 +23,22 @@ public data class GroundStationConfig(
     /** MAVLink version of the frames we send: 2 (default) or 1. */
     public val mavlinkVersion: Int = 2,
     public val streamRates: Map<Int, Double> = DEFAULT_STREAM_RATES,
+    /** How long to wait for a requested stream (or the home) before asking again. */
+    public val streamRequestInterval: Duration = 2.seconds,
+    /** How many times a stream that does not come is asked for. */
+    public val streamRequestRounds: Int = 5,
+    /**
+     * Ask each vehicle found for HOME_POSITION at once (MAV_CMD_REQUEST_MESSAGE), and again every
+     * [streamRequestInterval] until it has one: real autopilots have no home until their estimator
+     * sets an origin, tens of seconds after boot.
+     */
+    public val requestHome: Boolean = true,
+    /**
+     * Most source addresses the station keeps a frame decoder for; beyond it the one heard least
+     * recently is dropped (counted in [LinkStats.evictedPeers]), so a flood of datagrams from
+     * spoofed addresses cannot grow memory without limit.
+     */
+    public val maxPeers: Int = 1024,
 ) {
     init {
         require(systemId in 1..255) { "systemId must be in 1..255, was $systemId" }
@@ -28,17 +46,26 @@ public data class GroundStationConfig(
         require(heartbeatInterval.isPositive()) { "heartbeatInterval must be > 0, was $heartbeatInterval" }
         require(lostAfter.isPositive()) { "lostAfter must be > 0, was $lostAfter" }
         require(mavlinkVersion == 1 || mavlinkVersion == 2) { "mavlinkVersion must be 1 or 2, was $mavlinkVersion" }
+        require(streamRequestInterval.isPositive()) { "streamRequestInterval must be > 0, was $streamRequestInterval" }
+        require(streamRequestRounds >= 1) { "streamRequestRounds must be ≥ 1, was $streamRequestRounds" }
+        require(maxPeers >= 1) { "maxPeers must be ≥ 1, was $maxPeers" }
         streamRates.forEach { (id, hz) -> require(hz > 0 && hz <= 1000) { "stream rate for message $id must be in (0, 1000] Hz, was $hz" } }
     }
 
     public companion object {
-        /** SYS_STATUS, GPS_RAW_INT and EXTENDED_SYS_STATE at 2 Hz; ATTITUDE and GLOBAL_POSITION_INT at 4 Hz; HOME_POSITION at 0.5 Hz. */
+        /**
+         * What a mission executor needs: SYS_STATUS, GPS_RAW_INT, MISSION_CURRENT and
+         * EXTENDED_SYS_STATE at 2 Hz; ATTITUDE and GLOBAL_POSITION_INT at 4 Hz; HOME_POSITION at
+         * 0.2 Hz (it is also asked for at once, see [requestHome]). MISSION_CURRENT is the only
+         * report of progress through items that ArduCopter never reports reached (a final NAV_LAND).
+         */
         public val DEFAULT_STREAM_RATES: Map<Int, Double> = mapOf(
             1 to 2.0, // SYS_STATUS
             24 to 2.0, // GPS_RAW_INT
             30 to 4.0, // ATTITUDE
             33 to 4.0, // GLOBAL_POSITION_INT
-            242 to 0.5, // HOME_POSITION
+            42 to 2.0, // MISSION_CURRENT
+            242 to 0.2, // HOME_POSITION
             245 to 2.0, // EXTENDED_SYS_STATE
         )
     }

@@ -16,6 +16,7 @@ import pod.core.vehicle.StatusText
 import pod.core.vehicle.VehicleIdentity
 import pod.mavlink.codec.MavFrame
 import pod.mavlink.link.LinkPeer
+import pod.mavlink.telemetry.StatusTextJoiner
 import pod.mavlink.telemetry.VehicleTelemetry
 import kotlin.time.TimeMark
 import kotlin.time.TimeSource
@@ -49,6 +50,11 @@ public class MavlinkVehicle internal constructor(
         onBufferOverflow = BufferOverflow.DROP_OLDEST,
     )
     private val gaps = SequenceGaps()
+    private val texts = StatusTextJoiner()
+    private val textClock = TimeSource.Monotonic.markNow()
+
+    /** Message ids heard from the autopilot since the station last asked for streams (see [StreamRequests]). */
+    internal val heardMessages: MutableSet<Int> = java.util.concurrent.ConcurrentHashMap.newKeySet()
 
     @Volatile internal var lastHeartbeat: TimeMark = TimeSource.Monotonic.markNow()
     @Volatile internal var peer: LinkPeer? = null
@@ -77,7 +83,10 @@ public class MavlinkVehicle internal constructor(
     /** Arm, change mode, take off, land, return, go to, pause and continue, each confirmed. */
     public val action: pod.mavlink.action.VehicleActions = pod.mavlink.action.VehicleActions(this)
 
-    /** Text lines the vehicle sends (STATUSTEXT), as they arrive. */
+    /**
+     * Text lines the vehicle sends (STATUSTEXT), as they arrive; a long line sent in chunks comes
+     * joined, once its last chunk is in (or, when a chunk is lost, about a second after its first).
+     */
     public val statusTexts: SharedFlow<StatusText> = _statusTexts.asSharedFlow()
 
     /** Every message the vehicle sends (a slow collector loses the oldest beyond 1024 buffered). */
@@ -104,11 +113,19 @@ public class MavlinkVehicle internal constructor(
         } else if (message != null && frame.componentId == _identity.value.componentId) {
             telemetry.onMessage(message)
         }
+        if (frame.componentId == _identity.value.componentId) heardMessages += frame.messageId
         if (message is Statustext) {
             val severity = Severity.entries.getOrElse(message.severity().value()) { Severity.DEBUG }
-            _statusTexts.tryEmit(StatusText(severity, message.text().trimEnd('\u0000')))
+            val lines = synchronized(texts) { texts.feed(severity, message.text(), message.id(), message.chunkSeq(), textClock.elapsedNow().inWholeNanoseconds) }
+            lines.forEach { _statusTexts.tryEmit(it) }
         }
         _messages.tryEmit(InboundMessage(frame, message))
+    }
+
+    /** Delivers chunked lines whose missing chunks are overdue; the station calls it a few times a second. */
+    internal fun flushStatusTexts() {
+        val lines = synchronized(texts) { texts.flush(textClock.elapsedNow().inWholeNanoseconds) }
+        lines.forEach { _statusTexts.tryEmit(it) }
     }
 
     override fun toString(): String = "vehicle ${_identity.value.systemId}"

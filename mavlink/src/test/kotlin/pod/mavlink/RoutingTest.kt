@@ -46,7 +46,12 @@ private class RawVehicle(val systemId: Int, private val gcsPort: Int) : AutoClos
             val bytes = ByteArray(buffer.remaining()).also { buffer.get(it) }
             decoder.feed(bytes) { frame ->
                 val message = MessageCodec.Default.decode(frame)
-                if (message is CommandLong && message.command().value() != MavCommands.SET_MESSAGE_INTERVAL) {
+                // The station's own requests on discovery (stream rates, the home) are not under test here.
+                val stationRequest = message is CommandLong && (
+                    message.command().value() == MavCommands.SET_MESSAGE_INTERVAL ||
+                        (message.command().value() == MavCommands.REQUEST_MESSAGE && message.param1() == 242f)
+                    )
+                if (message is CommandLong && !stationRequest) {
                     seen += message.command().value()
                 }
             }

@@ -71,8 +71,27 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
             .build()
     }
 
-    /** The message for one of the autopilot's [SimOutput]s. */
-    fun output(out: SimOutput, s: SimState, params: SimParameters): Any = when (out) {
+    private var textId = 0
+
+    /**
+     * STATUSTEXT for [text]: one message when it fits the 50-character field (id 0), else chunks
+     * of 50 with one new non-zero id and chunk_seq 0, 1, …, the last one shorter (empty when the
+     * text fills its chunks exactly), as ArduPilot's GCS::send_textv
+     * (libraries/GCS_MAVLink/GCS_Common.cpp) sends them. PX4 sends the same way.
+     */
+    fun statusTexts(severity: Int, text: String): List<Statustext> {
+        val level = EnumValue.create<MavSeverity>(severity)
+        if (text.length <= TEXT_FIELD) return listOf(Statustext.builder().severity(level).text(text).build())
+        textId = if (textId >= 0xFFFF) 1 else textId + 1
+        val chunks = (0..text.length / TEXT_FIELD).map { i -> text.substring(minOf(i * TEXT_FIELD, text.length), minOf((i + 1) * TEXT_FIELD, text.length)) }
+        return chunks.mapIndexed { i, chunk -> Statustext.builder().severity(level).text(chunk).id(textId).chunkSeq(i).build() }
+    }
+
+    /** The messages for one of the autopilot's [SimOutput]s (several for a long text). */
+    fun outputs(out: SimOutput, s: SimState, params: SimParameters): List<Any> =
+        if (out is SimOutput.Text) statusTexts(out.severity, out.text) else listOf(output(out, s, params))
+
+    private fun output(out: SimOutput, s: SimState, params: SimParameters): Any = when (out) {
         is SimOutput.Ack -> CommandAck.builder()
             .command(EnumValue.create<MavCmd>(out.command))
             .result(EnumValue.create<MavResult>(out.result))
@@ -80,7 +99,7 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
             .targetSystem(out.targetSystem)
             .targetComponent(out.targetComponent)
             .build()
-        is SimOutput.Text -> Statustext.builder().severity(EnumValue.create<MavSeverity>(out.severity)).text(out.text.take(50)).build()
+        is SimOutput.Text -> statusTexts(out.severity, out.text).first()
         is SimOutput.ItemReached -> MissionItemReached.builder().seq(out.seq).build()
         is SimOutput.MissionCurrent -> missionCurrent(out.seq)
         is SimOutput.HomeChanged -> home(s)
@@ -201,6 +220,8 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
     private fun e7(degrees: Double): Int = (degrees * 1e7).roundToLong().toInt()
 
     private companion object {
+        /** Characters in STATUSTEXT's text field. */
+        const val TEXT_FIELD = 50
         val SUPPORTED = setOf(
             MessageIds.SYS_STATUS, MessageIds.GPS_RAW_INT, MessageIds.ATTITUDE,
             MessageIds.GLOBAL_POSITION_INT, MessageIds.HOME_POSITION, MessageIds.EXTENDED_SYS_STATE,

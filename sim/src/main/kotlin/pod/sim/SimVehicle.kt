@@ -189,7 +189,7 @@ public class SimVehicle(
                 is SimOutput.Text -> _texts.tryEmit(out.text)
                 else -> Unit
             }
-            send(messages.output(out, s, autopilot.params))
+            for (message in messages.outputs(out, s, autopilot.params)) send(message)
         }
     }
 

@@ -31,8 +31,11 @@ public data class SimVehicleConfig(
     public val initialCharge: Double = 1.0,
     /** Simulated seconds per wall-clock second. */
     public val timeScale: Double = 1.0,
-    /** Message id → rate in Hz of the streams it sends before anyone asks (HEARTBEAT is always 1 Hz). */
-    public val streamRates: Map<Int, Double> = DEFAULT_STREAM_RATES,
+    /**
+     * Message id → rate in Hz of the streams it sends before anyone asks (HEARTBEAT is always 1 Hz):
+     * by default what the autopilot it plays sends on a fresh telemetry link ([defaultStreamRates]).
+     */
+    public val streamRates: Map<Int, Double> = defaultStreamRates(autopilot, type),
     /**
      * Simulated time after boot before the GPS has a 3D fix and the estimator is ready: arming is
      * refused until then, as on a real autopilot (tens of seconds there; short here so tests stay fast).
@@ -56,8 +59,34 @@ public data class SimVehicleConfig(
         public val DEFAULT_HOME: Location = Location(41.178_046, -8.595_786, 120.m)
 
         /**
-         * SYS_STATUS, GPS_RAW_INT, EXTENDED_SYS_STATE, MISSION_CURRENT 1 Hz; GLOBAL_POSITION_INT,
-         * ATTITUDE, VFR_HUD 2 Hz; HOME_POSITION 0.2 Hz.
+         * What a vehicle of [autopilot] and [type] streams before a ground station asks:
+         * - ArduCopter: nothing but HEARTBEAT (its SRn_ stream rates default to 0;
+         *   ArduPilot libraries/GCS_MAVLink/GCS_MAVLink_Parameters.cpp, AP_MAV_DEFAULT_STREAM_RATE_* for
+         *   APM_BUILD_COPTER_OR_HELI);
+         * - ArduPlane: its stream groups at 1 Hz (same file, the ArduPlane defaults): SYS_STATUS,
+         *   MISSION_CURRENT, GPS_RAW_INT (EXT_STAT), GLOBAL_POSITION_INT (POSITION), ATTITUDE (EXTRA1),
+         *   VFR_HUD (EXTRA2); HOME_POSITION and EXTENDED_SYS_STATE only when asked;
+         * - PX4: [DEFAULT_STREAM_RATES], its normal-mode set (PX4 src/modules/mavlink/mavlink_main.cpp,
+         *   Mavlink::configure_streams_to_default, MAVLINK_MODE_NORMAL).
+         */
+        public fun defaultStreamRates(autopilot: Autopilot, type: VehicleType): Map<Int, Double> = when {
+            autopilot == Autopilot.PX4 -> DEFAULT_STREAM_RATES
+            type == VehicleType.FIXED_WING -> ARDUPLANE_STREAM_RATES
+            else -> emptyMap()
+        }
+
+        private val ARDUPLANE_STREAM_RATES: Map<Int, Double> = mapOf(
+            MessageIds.SYS_STATUS to 1.0,
+            MessageIds.MISSION_CURRENT to 1.0,
+            MessageIds.GPS_RAW_INT to 1.0,
+            MessageIds.GLOBAL_POSITION_INT to 1.0,
+            MessageIds.ATTITUDE to 1.0,
+            MessageIds.VFR_HUD to 1.0,
+        )
+
+        /**
+         * PX4's streams unasked: SYS_STATUS, GPS_RAW_INT, EXTENDED_SYS_STATE, MISSION_CURRENT 1 Hz;
+         * GLOBAL_POSITION_INT, ATTITUDE, VFR_HUD 2 Hz; HOME_POSITION 0.2 Hz.
          */
         public val DEFAULT_STREAM_RATES: Map<Int, Double> = mapOf(
             MessageIds.SYS_STATUS to 1.0,

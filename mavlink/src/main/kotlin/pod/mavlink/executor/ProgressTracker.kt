@@ -61,15 +61,25 @@ internal class ProgressTracker(private val plan: MissionPlan) {
     /** The seq the last step starts at (its first item, or its command's key). */
     val lastStepStart: Int get() = (stepCount - 1).let { if (firstSeq[it] >= 0) firstSeq[it] else keySeq[it] }
 
-    /** The vehicle reports item [seq] as its current one. */
+    /**
+     * The vehicle reports item [seq] as its current one. Progress only moves forward: a lower item
+     * is ignored, whether it is a jump back (DO_JUMP) or ArduCopter resetting its mission to item 1
+     * when it disarms after the final landing (ArduCopter/AP_Arming.cpp, AP_Arming_Copter::disarm
+     * calls mission.reset()).
+     */
     fun onCurrent(seq: Int): List<Output> {
         if (seq > current) current = seq
         return advance()
     }
 
-    /** The vehicle reports item [seq] reached. */
+    /**
+     * The vehicle reports item [seq] reached: it has moved on to a later item, so this also stands
+     * for a MISSION_CURRENT of at least [seq] + 1 that may have been lost (MISSION_CURRENT is a
+     * periodic stream; completion must not hang on one lost message).
+     */
     fun onReached(seq: Int): List<Output> {
         if (seq > reached) reached = seq
+        if (seq + 1 > current) current = seq + 1
         return advance()
     }
 

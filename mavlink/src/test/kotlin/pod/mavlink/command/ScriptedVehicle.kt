@@ -20,14 +20,16 @@ import pod.mavlink.link.MavlinkLink
 
 /**
  * A vehicle on a real loopback socket whose answers a test scripts: for every message the ground
- * station sends it calls [answer] and sends back what that returns. Heartbeats go out every 100 ms
- * until [silence] is called.
+ * station sends it calls [answer] and sends back what that returns (the station's own stream
+ * requests only when started with seeStationRequests). Heartbeats go out every 100 ms until
+ * [silence] is called.
  */
 class ScriptedVehicle private constructor(
     private val link: MavlinkLink,
     private val systemId: Int,
     private val autopilot: Int,
     private val answer: suspend (message: Any) -> List<Any>,
+    private val seeStationRequests: Boolean,
 ) {
     private val encoder = FrameEncoder()
     private val sequences = SequenceNumbers()
@@ -53,9 +55,14 @@ class ScriptedVehicle private constructor(
             link.receive { _, bytes ->
                 decoder.feed(bytes) { frame ->
                     val message = MessageCodec.Default.decode(frame) ?: return@feed
-                    if (message is CommandLong && message.command().value() == MavCommands.SET_MESSAGE_INTERVAL) return@feed
+                    // What the station asks on its own (stream rates, the home) is not a command under test.
+                    val stationRequest = message is CommandLong && (
+                        message.command().value() == MavCommands.SET_MESSAGE_INTERVAL ||
+                            (message.command().value() == MavCommands.REQUEST_MESSAGE && message.param1() == 242f)
+                        )
+                    if (stationRequest && !seeStationRequests) return@feed
                     if (message is Heartbeat) return@feed
-                    if (message is CommandLong) commands.update { it + (message.command().value() to message.confirmation()) }
+                    if (message is CommandLong && !stationRequest) commands.update { it + (message.command().value() to message.confirmation()) }
                     inbox.trySend(message)
                 }
             }
@@ -80,8 +87,9 @@ class ScriptedVehicle private constructor(
             gcsPort: Int,
             systemId: Int = 1,
             autopilot: Int = MavlinkEnums.MAV_AUTOPILOT_ARDUPILOTMEGA,
+            seeStationRequests: Boolean = false,
             answer: suspend (message: Any) -> List<Any>,
         ): ScriptedVehicle =
-            ScriptedVehicle(MavlinkLink.open("udpout://127.0.0.1:$gcsPort"), systemId, autopilot, answer).also { it.start(scope) }
+            ScriptedVehicle(MavlinkLink.open("udpout://127.0.0.1:$gcsPort"), systemId, autopilot, answer, seeStationRequests).also { it.start(scope) }
     }
 }

@@ -71,6 +71,23 @@ class ProgressTrackerTest : StringSpec({
         tracker.allDone shouldBe true
     }
 
+    "an ArduCopter landing: the item before it reached (its MISSION_CURRENT lost) puts the vehicle on the landing, and the reset to item 1 after the disarm is not a step back" {
+        val landing = listOf(MissionStep.TakeOff(at, 0.deg), MissionStep.Waypoint(at.offset(20.m, 0.m)), MissionStep.Land(home))
+        val plan = MissionPlanner.plan(Mission("m", null, landing), MissionFlavor.ARDUCOPTER, home)
+        val tracker = ProgressTracker(plan)
+        val land = plan.items.indexOfLast { it.command == 21 }
+        val events = ArrayList<MissionEvent>()
+        events += tracker.onCurrent(1).events()
+        // Only what ArduCopter sends unasked: each item before the landing reached; nothing for the landing.
+        for (seq in 1 until land) events += tracker.onReached(seq).events()
+        tracker.currentItem shouldBe land
+        (tracker.currentItem >= tracker.lastStepStart) shouldBe true
+        events += tracker.onCurrent(1).events()
+        tracker.currentItem shouldBe land
+        tracker.currentStep shouldBe 2
+        events shouldBe inOrder(2).dropLast(1) + MissionEvent.StepStarted(2)
+    }
+
     "finish ends the steps not yet reported, then completes, once" {
         val loiter = listOf(MissionStep.TakeOff(at, 0.deg), MissionStep.Loiter(at, 0.m, pod.core.mission.LoiterDuration.Unlimited))
         val tracker = ProgressTracker(MissionPlanner.plan(Mission("m", null, loiter), MissionFlavor.ARDUCOPTER, home))

@@ -127,11 +127,39 @@ internal class MissionRunner(private val ap: SimAutopilot) {
     /** Whether the vehicle in AUTO on the ground is about to take off (so it is not parked). */
     fun wantsToFly(): Boolean = !done && (ap.isPx4 || items.getOrNull(seq)?.command.let { it == NAV_TAKEOFF || it == NAV_VTOL_TAKEOFF })
 
-    /** A landing item touched down: it is complete. */
+    /**
+     * A landing item touched down: it is complete. ArduCopter ends a mission this way when no
+     * take-off follows the landing: it disarms at once, reports nothing reached, and its mission
+     * goes back to item 1 (ArduCopter/mode_auto.cpp, ModeAuto::verify_land disarms and returns
+     * false, "leaves mission state machine in the current NAV_LAND"; ArduCopter/AP_Arming.cpp,
+     * AP_Arming_Copter::disarm calls mission.reset(), and AP_Mission::update then starts item 1
+     * again, "Mission: 1 Takeoff"). It stays in AUTO.
+     */
     fun touchedDown() {
         landing = false
+        if (ap.multirotor && !ap.isPx4 && items.getOrNull(seq)?.command == NAV_LAND && !takeoffAfter(seq)) {
+            ap.disarm()
+            ap.text(Severity.INFO, "Disarming motors")
+            seq = first
+            newItem()
+            ap.text(Severity.INFO, "Mission: $first ${commandName(items.getOrNull(first)?.command)}")
+            done = true
+            finishedOnGround = true
+            holdAt = ap.body.location
+            return
+        }
         complete()
         if (seq >= items.size) finish()
+    }
+
+    /** A take-off follows NAV item [index] (ArduCopter then goes on after landing: AP_Mission::continue_after_land_check_for_takeoff). */
+    private fun takeoffAfter(index: Int): Boolean =
+        items.drop(index + 1).firstOrNull { it.command in NAV }?.command.let { it == NAV_TAKEOFF || it == NAV_VTOL_TAKEOFF }
+
+    private fun commandName(command: Int?): String = when (command) {
+        NAV_TAKEOFF -> "Takeoff"
+        NAV_WAYPOINT -> "WP"
+        else -> command?.toString() ?: "?"
     }
 
     /** What to fly this step. */

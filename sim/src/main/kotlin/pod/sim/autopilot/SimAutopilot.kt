@@ -178,7 +178,10 @@ internal class SimAutopilot(
         commands.step(dt)
         if (missionServer.current != lastCurrent) {
             lastCurrent = missionServer.current
-            emit(SimOutput.MissionCurrent(lastCurrent))
+            // PX4's mission manager announces a new current item; ArduPilot only streams
+            // MISSION_CURRENT when asked (see SimVehicleConfig.defaultStreamRates) and answers
+            // MISSION_SET_CURRENT with one.
+            if (isPx4) emit(SimOutput.MissionCurrent(lastCurrent))
         }
     }
 

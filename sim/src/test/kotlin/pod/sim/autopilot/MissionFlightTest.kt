@@ -104,7 +104,8 @@ class MissionFlightTest : StringSpec({
         ap.armCommand()
         ap.command(CommandRequest(300))
         ap.runUntil(600.0) { !it.armed }
-        ap.reached shouldBe listOf(1, 2, 3, 2, 3, 2, 3, 5, 6)
+        // ArduCopter reports no final NAV_LAND reached (see ArduCopterMissionEndTest).
+        ap.reached shouldBe listOf(1, 2, 3, 2, 3, 2, 3, 5)
     }
 
     "camera items take photos by distance, by interval and on demand, each recorded with where it was taken" {
@@ -155,7 +156,7 @@ class MissionFlightTest : StringSpec({
         }
         ap.command(CommandRequest(193, param1 = 1f)) shouldBe MavResult.ACCEPTED
         ap.runUntil(300.0) { !it.armed }
-        ap.reached shouldBe listOf(1, 2, 3)
+        ap.reached shouldBe listOf(1, 2) // and the final NAV_LAND, which ArduCopter does not report reached
         horizontalDistance(ap.body.location, HOME.offset(north = pod.core.units.Distance(200.0), east = pod.core.units.Distance(0.0))) shouldBeLessThan 2.0
     }
 
@@ -169,7 +170,7 @@ class MissionFlightTest : StringSpec({
         ap.runUntil(60.0) { it.missionServer.current == 2 }
         ap.missionServer.onMessage(pod.mavlink.mission.MissionMessage.SetCurrent(3), 0)
         ap.runUntil(300.0) { !it.armed }
-        ap.reached shouldContainInOrder listOf(1, 3, 4)
+        ap.reached shouldContainInOrder listOf(1, 3) // then it lands on item 4, which ArduCopter does not report reached
         (2 in ap.reached) shouldBe false
     }
 })

@@ -1,0 +1,70 @@
+package pod.mavlink
+
+import io.dronefleet.mavlink.common.CommandLong
+import io.dronefleet.mavlink.common.MavCmd
+import kotlinx.coroutines.CoroutineName
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.Job
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.isActive
+import kotlinx.coroutines.launch
+import pod.core.vehicle.ConnectionState
+
+/**
+ * Asks a vehicle for the telemetry a ground station needs, and keeps asking until it comes.
+ *
+ * ArduPilot streams nothing but HEARTBEAT until asked (its SRn_ stream rates default to 0 on
+ * network links: libraries/GCS_MAVLink/GCS_MAVLink_Parameters.cpp, GCS_MAVLINK_Parameters::var_info),
+ * and the requests travel without a reliable answer here, so:
+ * - every rate of [GroundStationConfig.streamRates] is asked with MAV_CMD_SET_MESSAGE_INTERVAL, and
+ *   asked again every [GroundStationConfig.streamRequestInterval] while its message has not been heard,
+ *   up to [GroundStationConfig.streamRequestRounds] rounds;
+ * - HOME_POSITION is asked at once with MAV_CMD_REQUEST_MESSAGE, and again at the same interval
+ *   until the home arrives: real firmware has none until its estimator sets an origin, ~20 s after
+ *   boot, and the slow HOME_POSITION stream would otherwise leave a picked vehicle without a home
+ *   for seconds.
+ *
+ * One job per vehicle; a vehicle found again after being lost is asked again from the start
+ * ([restart]), since a rebooted autopilot forgets what it was asked.
+ */
+internal class StreamRequests(private val scope: CoroutineScope, private val config: GroundStationConfig) {
+    private val jobs = HashMap<Int, Job>()
+
+    /** Starts (or starts over) asking [vehicle]. */
+    fun restart(vehicle: MavlinkVehicle) {
+        val job = scope.launch(CoroutineName("stream-requests-${vehicle.systemId}")) { ask(vehicle) }
+        synchronized(jobs) { jobs.put(vehicle.systemId, job) }?.cancel()
+    }
+
+    private suspend fun ask(vehicle: MavlinkVehicle) {
+        vehicle.heardMessages.clear()
+        var round = 0
+        while (scope.isActive && vehicle.connection.value == ConnectionState.CONNECTED) {
+            val homeMissing = config.requestHome && vehicle.telemetry.home.value == null
+            if (homeMissing) vehicle.send(command(vehicle, MavCmd.MAV_CMD_REQUEST_MESSAGE, HOME_POSITION.toFloat(), 0f))
+            val unheard = if (round < config.streamRequestRounds) config.streamRates.filterKeys { it !in vehicle.heardMessages } else emptyMap()
+            for ((messageId, hz) in unheard) {
+                vehicle.send(command(vehicle, MavCmd.MAV_CMD_SET_MESSAGE_INTERVAL, messageId.toFloat(), (1_000_000.0 / hz).toFloat()))
+            }
+            round++
+            if (!homeMissing && unheard.isEmpty()) return
+            delay(config.streamRequestInterval)
+        }
+    }
+
+    private fun command(vehicle: MavlinkVehicle, command: MavCmd, param1: Float, param2: Float): CommandLong {
+        val id = vehicle.identity.value
+        return CommandLong.builder()
+            .targetSystem(id.systemId)
+            .targetComponent(id.componentId)
+            .command(command)
+            .param1(param1)
+            .param2(param2)
+            .build()
+    }
+
+    internal companion object {
+        /** HOME_POSITION's message id. */
+        const val HOME_POSITION = 242
+    }
+}

@@ -1,0 +1,100 @@
+package pod.mavlink
+
+import io.dronefleet.mavlink.common.CommandLong
+import io.dronefleet.mavlink.common.GlobalPositionInt
+import io.dronefleet.mavlink.common.HomePosition
+import io.dronefleet.mavlink.common.MavSeverity
+import io.dronefleet.mavlink.common.Statustext
+import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.shouldBe
+import java.util.concurrent.ConcurrentHashMap
+import java.util.concurrent.atomic.AtomicInteger
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.CoroutineStart
+import kotlinx.coroutines.async
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.filterNotNull
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.flow.take
+import kotlinx.coroutines.flow.toList
+import kotlinx.coroutines.withTimeout
+import pod.core.vehicle.Severity
+import pod.core.vehicle.StatusText
+import pod.mavlink.command.MavCommands
+import pod.mavlink.command.ScriptedVehicle
+
+/** A ground station and one scripted vehicle that also sees the station's own requests. */
+private suspend fun withScripted(
+    config: GroundStationConfig,
+    answer: suspend (Any) -> List<Any>,
+    block: suspend CoroutineScope.(MavlinkVehicle, ScriptedVehicle) -> Unit,
+) = coroutineScope {
+    val gcs = GroundStation.open("udpin://127.0.0.1:0", this, config)
+    val scripted = ScriptedVehicle.start(this, gcs.link.localPort, seeStationRequests = true, answer = answer)
+    try {
+        block(withTimeout(5.seconds) { gcs.vehicles.first { 1 in it } }.getValue(1), scripted)
+    } finally {
+        scripted.close()
+        gcs.close()
+        coroutineContext[kotlinx.coroutines.Job]?.children?.forEach { it.cancel() }
+    }
+}
+
+private fun CommandLong.asks(command: Int, messageId: Int) = command().value() == command && param1() == messageId.toFloat()
+
+class StreamRequestsTest : StringSpec({
+
+    "the home is asked for at once on discovery, again until it comes, then no more" {
+        val asked = AtomicInteger()
+        val home = HomePosition.builder().latitude(411780460).longitude(-85957860).altitude(120_000).q(listOf(1f, 0f, 0f, 0f)).build()
+        // Like an autopilot whose estimator has no origin yet: no home for the first two requests.
+        val config = GroundStationConfig(streamRates = emptyMap(), streamRequestInterval = 200.milliseconds)
+        withScripted(config, { m ->
+            if (m is CommandLong && m.asks(MavCommands.REQUEST_MESSAGE, 242) && asked.incrementAndGet() >= 3) listOf(home) else emptyList()
+        }) { vehicle, _ ->
+            withTimeout(5.seconds) { vehicle.telemetry.home.filterNotNull().first() }.latitude shouldBe 41.178046
+            asked.get() shouldBe 3
+            // Requests stop once the home is known: three more rounds would have come in this time.
+            kotlinx.coroutines.delay(600.milliseconds)
+            asked.get() shouldBe 3
+        }
+    }
+
+    "a stream that does not come is asked for again, a bounded number of times; one that came is not" {
+        val requests = ConcurrentHashMap<Int, AtomicInteger>()
+        val position = GlobalPositionInt.builder().lat(411780460).lon(-85957860).alt(120_000).build()
+        val config = GroundStationConfig(
+            streamRates = mapOf(33 to 4.0, 1 to 1.0), requestHome = false,
+            streamRequestInterval = 150.milliseconds, streamRequestRounds = 4,
+        )
+        withScripted(config, { m ->
+            if (m is CommandLong && m.command().value() == MavCommands.SET_MESSAGE_INTERVAL) {
+                val id = m.param1().toInt()
+                val n = requests.getOrPut(id) { AtomicInteger() }.incrementAndGet()
+                // The first request for the position is lost; the second starts it.
+                if (id == 33 && n >= 2) listOf(position) else emptyList()
+            } else {
+                emptyList()
+            }
+        }) { vehicle, _ ->
+            withTimeout(5.seconds) { vehicle.telemetry.position.filterNotNull().first() }
+            withTimeout(5.seconds) { while (requests[1]?.get() != 4) kotlinx.coroutines.delay(20.milliseconds) }
+            requests.getValue(33).get() shouldBe 2
+        }
+    }
+
+    "a long STATUSTEXT sent in chunks reaches statusTexts as one line, even with its chunks reordered" {
+        val line = "Mode change to AUTO RTL failed: No landing sequence found"
+        withScripted(GroundStationConfig(streamRates = emptyMap(), requestHome = false), { emptyList() }) { vehicle, scripted ->
+            val texts = async(start = CoroutineStart.UNDISPATCHED) { vehicle.statusTexts.take(2).toList() }
+            fun chunk(text: String, seq: Int) = Statustext.builder().severity(MavSeverity.MAV_SEVERITY_WARNING).text(text).id(9).chunkSeq(seq).build()
+            scripted.send(chunk(line.substring(50), 1))
+            scripted.send(chunk(line.take(50), 0))
+            // A second line whose end never comes is delivered as it is, about a second later.
+            scripted.send(chunk("x".repeat(50), 0).let { Statustext.builder().severity(it.severity()).text(it.text()).id(10).chunkSeq(0).build() })
+            withTimeout(5.seconds) { texts.await() } shouldBe listOf(StatusText(Severity.WARNING, line), StatusText(Severity.WARNING, "x".repeat(50)))
+        }
+    }
+})
