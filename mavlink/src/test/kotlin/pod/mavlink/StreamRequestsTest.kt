@@ -7,7 +7,6 @@ import io.dronefleet.mavlink.common.MavSeverity
 import io.dronefleet.mavlink.common.Statustext
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.shouldBe
-import java.util.concurrent.ConcurrentHashMap
 import java.util.concurrent.atomic.AtomicInteger
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
@@ -15,7 +14,10 @@ import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.CoroutineStart
 import kotlinx.coroutines.async
 import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.filterNotNull
+import kotlinx.coroutines.flow.update
+import kotlinx.coroutines.flow.updateAndGet
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.flow.take
 import kotlinx.coroutines.flow.toList
@@ -63,7 +65,7 @@ class StreamRequestsTest : StringSpec({
     }
 
     "a stream that does not come is asked for again, a bounded number of times; one that came is not" {
-        val requests = ConcurrentHashMap<Int, AtomicInteger>()
+        val requests = MutableStateFlow<Map<Int, Int>>(emptyMap())
         val position = GlobalPositionInt.builder().lat(411780460).lon(-85957860).alt(120_000).build()
         val config = GroundStationConfig(
             streamRates = mapOf(33 to 4.0, 1 to 1.0), requestHome = false,
@@ -72,7 +74,7 @@ class StreamRequestsTest : StringSpec({
         withScripted(config, { m ->
             if (m is CommandLong && m.command().value() == MavCommands.SET_MESSAGE_INTERVAL) {
                 val id = m.param1().toInt()
-                val n = requests.getOrPut(id) { AtomicInteger() }.incrementAndGet()
+                val n = requests.updateAndGet { it + (id to (it[id] ?: 0) + 1) }.getValue(id)
                 // The first request for the position is lost; the second starts it.
                 if (id == 33 && n >= 2) listOf(position) else emptyList()
             } else {
@@ -80,8 +82,25 @@ class StreamRequestsTest : StringSpec({
             }
         }) { vehicle, _ ->
             withTimeout(5.seconds) { vehicle.telemetry.position.filterNotNull().first() }
-            withTimeout(5.seconds) { while (requests[1]?.get() != 4) kotlinx.coroutines.delay(20.milliseconds) }
-            requests.getValue(33).get() shouldBe 2
+            withTimeout(5.seconds) { requests.first { it[1] == 4 } }
+            requests.value[33] shouldBe 2
+        }
+    }
+
+    "a vehicle found again after being lost is asked for its streams again" {
+        val requests = MutableStateFlow(0)
+        val config = GroundStationConfig(streamRates = mapOf(33 to 4.0), requestHome = false, lostAfter = 500.milliseconds, streamRequestRounds = 1)
+        withScripted(config, { m ->
+            if (m is CommandLong && m.asks(MavCommands.SET_MESSAGE_INTERVAL, 33)) requests.update { it + 1 }
+            emptyList()
+        }) { vehicle, scripted ->
+            withTimeout(5.seconds) { requests.first { it >= 1 } }
+            scripted.silence()
+            withTimeout(5.seconds) { vehicle.connection.first { it == pod.core.vehicle.ConnectionState.LOST } }
+            val before = requests.value
+            scripted.resume()
+            withTimeout(5.seconds) { vehicle.connection.first { it == pod.core.vehicle.ConnectionState.CONNECTED } }
+            withTimeout(5.seconds) { requests.first { it > before } }
         }
     }
 

@@ -38,16 +38,11 @@ class ScriptedVehicle private constructor(
     /** COMMAND_LONGs received: command and confirmation. */
     val commands = MutableStateFlow<List<Pair<Int, Int>>>(emptyList())
 
+    private var scope: CoroutineScope? = null
+
     private fun start(scope: CoroutineScope) {
-        heartbeats = scope.launch {
-            while (true) {
-                send(
-                    Heartbeat.builder().type(EnumValue.create(2)).autopilot(EnumValue.create(autopilot))
-                        .baseMode(EnumValue.create(1)).systemStatus(MavState.MAV_STATE_STANDBY).mavlinkVersion(3).build(),
-                )
-                delay(100.milliseconds)
-            }
-        }
+        this.scope = scope
+        beat()
         scope.launch {
             val decoder = FrameDecoder()
             val inbox = kotlinx.coroutines.channels.Channel<Any>(kotlinx.coroutines.channels.Channel.UNLIMITED)
@@ -69,9 +64,27 @@ class ScriptedVehicle private constructor(
         }
     }
 
+    private fun beat() {
+        val scope = scope ?: return
+        heartbeats = scope.launch {
+            while (true) {
+                send(
+                    Heartbeat.builder().type(EnumValue.create(2)).autopilot(EnumValue.create(autopilot))
+                        .baseMode(EnumValue.create(1)).systemStatus(MavState.MAV_STATE_STANDBY).mavlinkVersion(3).build(),
+                )
+                delay(100.milliseconds)
+            }
+        }
+    }
+
     /** Stops the heartbeats (and nothing else): the ground station will mark the vehicle lost. */
     fun silence() {
         heartbeats?.cancel()
+    }
+
+    /** Starts the heartbeats again after [silence]: the ground station will find the vehicle again. */
+    fun resume() {
+        if (heartbeats?.isActive != true) beat()
     }
 
     suspend fun send(message: Any) {
