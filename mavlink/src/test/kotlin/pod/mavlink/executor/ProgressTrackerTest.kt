@@ -88,6 +88,19 @@ class ProgressTrackerTest : StringSpec({
         events shouldBe inOrder(2).dropLast(1) + MissionEvent.StepStarted(2)
     }
 
+    "an ArduCopter landing seen through MISSION_CURRENT alone (every MISSION_ITEM_REACHED lost): on the landing, then back to 1, still on the landing" {
+        val landing = listOf(MissionStep.TakeOff(at, 0.deg), MissionStep.Waypoint(at.offset(20.m, 0.m)), MissionStep.Land(home))
+        val plan = MissionPlanner.plan(Mission("m", null, landing), MissionFlavor.ARDUCOPTER, home)
+        val tracker = ProgressTracker(plan)
+        val land = plan.items.indexOfLast { it.command == 21 }
+        val events = ArrayList<MissionEvent>()
+        for (seq in 1..land) events += tracker.onCurrent(seq).events()
+        events += tracker.onCurrent(1).events()
+        tracker.currentItem shouldBe land
+        tracker.currentStep shouldBe 2
+        events shouldBe inOrder(2).dropLast(1) + MissionEvent.StepStarted(2)
+    }
+
     "finish ends the steps not yet reported, then completes, once" {
         val loiter = listOf(MissionStep.TakeOff(at, 0.deg), MissionStep.Loiter(at, 0.m, pod.core.mission.LoiterDuration.Unlimited))
         val tracker = ProgressTracker(MissionPlanner.plan(Mission("m", null, loiter), MissionFlavor.ARDUCOPTER, home))
