@@ -91,6 +91,7 @@ public class SimVehicle(
     internal val autopilot = SimAutopilot(
         config.autopilot, config.type, config.systemId, config.home, config.initialCharge, missionServer,
         readyAfter = config.positionReadyAfter.toDouble(DurationUnit.SECONDS),
+        sensorsReadyAfter = config.sensorsReadyAfter.toDouble(DurationUnit.SECONDS),
     )
     private val _photos = MutableStateFlow<List<PhotoEvent>>(emptyList())
     private val _reached = MutableStateFlow<List<Int>>(emptyList())
@@ -189,7 +190,7 @@ public class SimVehicle(
                 is SimOutput.Text -> _texts.tryEmit(out.text)
                 else -> Unit
             }
-            send(messages.output(out, s, autopilot.params))
+            messages.output(out, s, autopilot.params)?.let { send(it) }
         }
     }
 
