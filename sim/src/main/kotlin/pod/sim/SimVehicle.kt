@@ -98,6 +98,10 @@ public class SimVehicle(
     private val _texts = MutableSharedFlow<String>(replay = 64, extraBufferCapacity = 64, onBufferOverflow = BufferOverflow.DROP_OLDEST)
 
     init {
+        for ((name, value) in config.parameters) {
+            require(autopilot.params.valueOf(name) != null) { "parameters: ${config.autopilot} ${config.type} has no parameter $name" }
+            autopilot.params.set(name, value)
+        }
         _state = MutableStateFlow(autopilot.state())
         messages.missionTotal = { missionServer.list(pod.mavlink.mission.MissionType.MISSION).size }
     }

@@ -45,6 +45,11 @@ public data class SimVehicleConfig(
      * armable ~43 s after boot, plane ~23 s). Defaults to [positionReadyAfter].
      */
     public val sensorsReadyAfter: Duration = positionReadyAfter,
+    /**
+     * Parameter values it boots with instead of the defaults, as SITL's `--defaults` file:
+     * `mapOf("DISARM_DELAY" to 0.0)`. Unknown names fail when the vehicle is created.
+     */
+    public val parameters: Map<String, Double> = emptyMap(),
     /** Simulated time the physics advances per integration step. */
     public val physicsStep: Duration = 50.milliseconds,
 ) {
