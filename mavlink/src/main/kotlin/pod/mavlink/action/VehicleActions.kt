@@ -77,7 +77,7 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
     /**
      * Arms the motors ([force] skips the autopilot's pre-arm checks) and waits until telemetry shows
      * it armed. A vehicle still initialising (its refusal names the estimator, home, GPS or settling
-     * sensors) is asked again every [ARM_RETRY] for up to [readyTimeout], with [waitingFor] saying
+     * sensors) is asked again every second for up to [readyTimeout], with [waitingFor] saying
      * why; then [VehicleNotReady]. A refusal waiting cannot clear (battery, mode) fails at once with
      * the autopilot's reason ([CommandRejected]).
      */
