@@ -1,12 +1,19 @@
 package pod.e2e
 
+import io.kotest.assertions.withClue
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.collections.shouldContainExactly
 import io.kotest.matchers.collections.shouldHaveSize
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import io.kotest.matchers.string.shouldNotContain
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.withContext
 import pod.core.units.Location
+import pod.sim.SimFleet
+import pod.sim.SimVehicleConfig
+import kotlin.time.Duration.Companion.seconds
 import java.io.File
 import java.nio.file.Files
 import java.util.concurrent.TimeUnit
@@ -94,5 +101,47 @@ class ScriptRunSpec : StringSpec({
         (low < landed) shouldBe true
         run.out.any { it.contains("cancel survey on [copter-1]") } shouldBe true
         run.out.any { it.contains("done   home on [copter-1]") } shouldBe true
+    }
+
+    /**
+     * Runs [script] under `pod run --connect` against [count] simulated copters behind a UDP link,
+     * started with the link: their home comes only once their estimator has an origin, seconds
+     * after their first heartbeat, as on a real autopilot. Their disarm-when-idle is off
+     * (DISARM_DELAY 0): at 40x its 10 s would pass before a 1 Hz heartbeat confirms the arming.
+     */
+    suspend fun connected(script: String, count: Int): Run = coroutineScope {
+        val port = freePort()
+        val base = SimVehicleConfig(
+            systemId = 1, timeScale = 40.0, positionReadyAfter = 20.seconds, gcs = "udpout://127.0.0.1:$port",
+            parameters = mapOf("DISARM_DELAY" to 0.0),
+        )
+        val fleet = SimFleet.start(count, this, base)
+        try {
+            withContext(Dispatchers.IO) { pod("run", script, "--connect", "udpin://127.0.0.1:$port") }
+        } finally {
+            fleet.stop()
+        }
+    }
+
+    "the sample script runs unchanged against vehicles reached with --connect, still booting when it starts" {
+        val run = connected(File("../samples/scripts/low-battery-survey.main.kts").canonicalPath, 1)
+        withClue({ run.err + run.out.joinToString("\n") }) {
+            run.err shouldNotContain "NullPointerException"
+            run.exitCode shouldBe 0
+            run.out.any { it.contains("copter-1 landed at home") } shouldBe true
+        }
+    }
+
+    "the README's Programs example runs unchanged against two vehicles reached with --connect" {
+        val readme = File("../README.md").readText()
+        val program = File(script("readme-programs.main.kts")).readLines().dropWhile { it != "pod {" }.drop(1).dropLast(1)
+        program.size shouldBe 8
+        program.forEach { readme shouldContain it } // the script's program is the README's, line for line
+        val run = connected(script("readme-programs.main.kts"), 2)
+        withClue({ run.err + run.out.joinToString("\n") }) {
+            run.err shouldNotContain "NullPointerException"
+            run.exitCode shouldBe 0
+            run.out.any { it.contains("done   home on [copter-1, copter-2]") } shouldBe true
+        }
     }
 })

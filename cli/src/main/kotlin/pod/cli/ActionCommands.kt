@@ -8,7 +8,11 @@ import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.double
 import com.github.ajalt.clikt.parameters.types.int
 import com.github.ajalt.clikt.parameters.types.restrictTo
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.distinctUntilChanged
+import kotlinx.coroutines.flow.filterNotNull
 import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.launch
 import kotlinx.coroutines.withTimeoutOrNull
 import pod.core.units.Location
 import pod.core.units.m
@@ -38,7 +42,21 @@ internal abstract class ActionCommand(out: Output, name: String, private val sum
 
 internal class ArmCommand(out: Output) : ActionCommand(out, "arm", "Arm the motors and wait until the vehicle reports it armed.") {
     private val force by option("--force", help = "skip the autopilot's pre-arm checks").flag()
-    override suspend fun perform(vehicle: MavlinkVehicle) = vehicle.action.arm(force).let { "armed" }
+
+    // A vehicle still initialising is waited for: say what it waits for, each new reason once.
+    override suspend fun perform(vehicle: MavlinkVehicle): String = coroutineScope {
+        val progress = launch {
+            vehicle.action.waitingFor.filterNotNull().distinctUntilChanged().collect { reason ->
+                out.line(if (json) jsonLine("event" to "waiting", "sysid" to vehicle.systemId, "for" to reason) else "vehicle ${vehicle.systemId}: waiting: $reason")
+            }
+        }
+        try {
+            vehicle.action.arm(force)
+            "armed"
+        } finally {
+            progress.cancel()
+        }
+    }
 }
 
 internal class DisarmCommand(out: Output) : ActionCommand(out, "disarm", "Disarm the motors and wait until the vehicle reports it disarmed.") {

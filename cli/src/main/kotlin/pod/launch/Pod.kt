@@ -1,5 +1,6 @@
 package pod.launch
 
+import kotlinx.coroutines.launch
 import kotlinx.coroutines.runBlocking
 import pod.core.engine.Engine
 import pod.core.engine.Program
@@ -34,7 +35,18 @@ fun <T> pod(choice: FleetChoice = FleetChoice.fromSystemProperties(), print: (St
                 val station = GroundStation.open(choice.address, this)
                 try {
                     val platform = MavlinkPlatform(station)
-                    Engine(platform).runShowing({ id -> platform.vehicles.value.firstOrNull { it.id == id }?.name ?: "vehicle $id" }, onLine = print, block = block)
+                    // Vehicles heard but still booting are not yet offered to `pick`: say what each lacks, once.
+                    val said = HashSet<Pair<Int, String>>()
+                    val booting = launch {
+                        platform.initialising.collect { waiting ->
+                            waiting.forEach { (id, lacks) -> if (said.add(id to lacks)) print("vehicle $id: initialising, waiting for its $lacks") }
+                        }
+                    }
+                    try {
+                        Engine(platform).runShowing({ id -> platform.vehicles.value.firstOrNull { it.id == id }?.name ?: "vehicle $id" }, onLine = print, block = block)
+                    } finally {
+                        booting.cancel()
+                    }
                 } finally {
                     station.close()
                 }

@@ -89,9 +89,9 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
 
     /** The messages for one of the autopilot's [SimOutput]s (several for a long text). */
     fun outputs(out: SimOutput, s: SimState, params: SimParameters): List<Any> =
-        if (out is SimOutput.Text) statusTexts(out.severity, out.text) else listOf(output(out, s, params))
+        if (out is SimOutput.Text) statusTexts(out.severity, out.text) else listOfNotNull(output(out, s, params))
 
-    private fun output(out: SimOutput, s: SimState, params: SimParameters): Any = when (out) {
+    private fun output(out: SimOutput, s: SimState, params: SimParameters): Any? = when (out) {
         is SimOutput.Ack -> CommandAck.builder()
             .command(EnumValue.create<MavCmd>(out.command))
             .result(EnumValue.create<MavResult>(out.result))
@@ -102,7 +102,7 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
         is SimOutput.Text -> statusTexts(out.severity, out.text).first()
         is SimOutput.ItemReached -> MissionItemReached.builder().seq(out.seq).build()
         is SimOutput.MissionCurrent -> missionCurrent(out.seq)
-        is SimOutput.HomeChanged -> home(s)
+        is SimOutput.HomeChanged -> home(s) ?: return null
         is SimOutput.Param -> params.at(out.index)!!.let { def ->
             ParamValue.builder()
                 .paramId(def.name)
@@ -197,7 +197,8 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
         .hdg((s.headingDeg * 100).roundToInt().mod(36000))
         .build()
 
-    private fun home(s: SimState): HomePosition = HomePosition.builder()
+    /** Nothing before the estimator's origin (and so home) is set, as GCS_MAVLINK::send_home_position. */
+    private fun home(s: SimState): HomePosition? = if (!s.positionReady) null else HomePosition.builder()
         .latitude(e7(s.home.latitude))
         .longitude(e7(s.home.longitude))
         .altitude((s.home.altitude.meters * 1000).roundToInt())

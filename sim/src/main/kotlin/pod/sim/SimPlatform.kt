@@ -118,10 +118,14 @@ public class SimPlatform private constructor(
             }
         }
 
-        /** Waits for a position and a fix, then keeps a vehicle armed on the ground armed. */
+        /**
+         * Waits for a position, a fix and home (so the platform offers the vehicle at once), then
+         * keeps a vehicle armed on the ground armed.
+         */
         private suspend fun ready(vehicle: MavlinkVehicle) {
             vehicle.telemetry.position.first { it != null }
             vehicle.telemetry.gps.first { it?.has3dFix == true }
+            vehicle.telemetry.home.first { it != null }
             val id = vehicle.identity.value
             when {
                 id.autopilot == Autopilot.PX4 -> vehicle.params.write("COM_DISARM_PRFLT", -1.0)

@@ -91,12 +91,17 @@ public class SimVehicle(
     internal val autopilot = SimAutopilot(
         config.autopilot, config.type, config.systemId, config.home, config.initialCharge, missionServer,
         readyAfter = config.positionReadyAfter.toDouble(DurationUnit.SECONDS),
+        sensorsReadyAfter = config.sensorsReadyAfter.toDouble(DurationUnit.SECONDS),
     )
     private val _photos = MutableStateFlow<List<PhotoEvent>>(emptyList())
     private val _reached = MutableStateFlow<List<Int>>(emptyList())
     private val _texts = MutableSharedFlow<String>(replay = 64, extraBufferCapacity = 64, onBufferOverflow = BufferOverflow.DROP_OLDEST)
 
     init {
+        for ((name, value) in config.parameters) {
+            require(autopilot.params.valueOf(name) != null) { "parameters: ${config.autopilot} ${config.type} has no parameter $name" }
+            autopilot.params.set(name, value)
+        }
         _state = MutableStateFlow(autopilot.state())
         messages.missionTotal = { missionServer.list(pod.mavlink.mission.MissionType.MISSION).size }
     }

@@ -37,10 +37,22 @@ public data class SimVehicleConfig(
      */
     public val streamRates: Map<Int, Double> = defaultStreamRates(autopilot, type),
     /**
-     * Simulated time after boot before the GPS has a 3D fix and the estimator is ready: arming is
-     * refused until then, as on a real autopilot (tens of seconds there; short here so tests stay fast).
+     * Simulated time after boot before the GPS has a 3D fix and the estimator sets its origin:
+     * until then there is no home (no HOME_POSITION) and arming is refused ("Arm: AHRS: waiting
+     * for home" on ArduPilot). Real ArduPilot SITL takes ~20 s; short here so tests stay fast.
      */
     public val positionReadyAfter: Duration = 2.seconds,
+    /**
+     * Simulated time after boot before the sensors pass the pre-arm checks: until then ArduPilot
+     * refuses to arm with "Arm: Accels inconsistent" even with home set (real SITL: copter
+     * armable ~43 s after boot, plane ~23 s). Defaults to [positionReadyAfter].
+     */
+    public val sensorsReadyAfter: Duration = positionReadyAfter,
+    /**
+     * Parameter values it boots with instead of the defaults, as SITL's `--defaults` file:
+     * `mapOf("DISARM_DELAY" to 0.0)`. Unknown names fail when the vehicle is created.
+     */
+    public val parameters: Map<String, Double> = emptyMap(),
     /** Simulated time the physics advances per integration step. */
     public val physicsStep: Duration = 50.milliseconds,
 ) {
@@ -50,6 +62,7 @@ public data class SimVehicleConfig(
         require(initialCharge in 0.0..1.0) { "initialCharge must be in 0..1, was $initialCharge" }
         require(timeScale > 0 && timeScale <= 1000) { "timeScale must be in (0, 1000], was $timeScale" }
         require(!positionReadyAfter.isNegative()) { "positionReadyAfter must not be negative, was $positionReadyAfter" }
+        require(!sensorsReadyAfter.isNegative()) { "sensorsReadyAfter must not be negative, was $sensorsReadyAfter" }
         require(physicsStep > Duration.ZERO && physicsStep <= 1.seconds) { "physicsStep must be in (0, 1 s], was $physicsStep" }
         streamRates.forEach { (id, hz) -> require(hz >= 0 && hz <= 1000) { "stream rate for message $id must be in [0, 1000] Hz, was $hz" } }
     }

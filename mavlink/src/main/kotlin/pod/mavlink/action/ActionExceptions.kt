@@ -41,3 +41,16 @@ public class ActionNotConfirmed(
     /** How long Pod watched. */
     public val waited: Duration,
 ) : ActionException("$action was accepted but the vehicle did not show $expected within $waited (last seen: $observed)")
+
+/**
+ * The vehicle was still initialising when [waited] ran out: it kept refusing to arm with
+ * [reason] (the autopilot's own words), a refusal that clears by waiting after boot.
+ */
+public class VehicleNotReady(
+    /** The vehicle's system id. */
+    public val systemId: Int,
+    /** What it was waiting for, in the autopilot's words. */
+    public val reason: String,
+    /** How long Pod waited. */
+    public val waited: Duration,
+) : ActionException("vehicle $systemId was still not ready to arm after $waited: $reason")

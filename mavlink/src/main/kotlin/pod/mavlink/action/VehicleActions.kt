@@ -6,7 +6,11 @@ import io.dronefleet.mavlink.util.EnumValue
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.minutes
 import kotlin.time.Duration.Companion.seconds
+import kotlin.time.TimeSource
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.asStateFlow
 import kotlinx.coroutines.flow.combine
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.withTimeoutOrNull
@@ -53,14 +57,56 @@ import pod.mavlink.telemetry.ModeRole
  */
 public class VehicleActions internal constructor(private val vehicle: MavlinkVehicle) {
     @Volatile private var pausedByCommand: Boolean? = null
+    private val _waitingFor = MutableStateFlow<String?>(null)
 
     /** How long a state change (armed flag, mode) may take to show in telemetry after the ack. */
     public var confirmTimeout: Duration = 8.seconds
 
-    /** Arms the motors ([force] skips the autopilot's pre-arm checks) and waits until telemetry shows it armed. */
+    /**
+     * How long [arm] waits for a vehicle that is still initialising. Real autopilots take tens of
+     * seconds after boot: ArduCopter SITL arms ~43 s after boot, ArduPlane ~23 s.
+     */
+    public var readyTimeout: Duration = 90.seconds
+
+    /**
+     * What [arm] is waiting for now, in the autopilot's words ("Arm: AHRS: waiting for home"), or
+     * null when it is not waiting: for a UI or a log to show while a vehicle initialises.
+     */
+    public val waitingFor: StateFlow<String?> = _waitingFor.asStateFlow()
+
+    /**
+     * Arms the motors ([force] skips the autopilot's pre-arm checks) and waits until telemetry shows
+     * it armed. A vehicle still initialising (its refusal names the estimator, home, GPS or settling
+     * sensors) is asked again every second for up to [readyTimeout], with [waitingFor] saying
+     * why; then [VehicleNotReady]. A refusal waiting cannot clear (battery, mode) fails at once with
+     * the autopilot's reason ([CommandRejected]).
+     */
     public suspend fun arm(force: Boolean = false) {
-        command(VehicleCommand(COMPONENT_ARM_DISARM, param1 = 1f, param2 = if (force) ARM_FORCE_MAGIC.toFloat() else 0f))
+        val started = TimeSource.Monotonic.markNow()
+        try {
+            while (true) {
+                try {
+                    command(VehicleCommand(COMPONENT_ARM_DISARM, param1 = 1f, param2 = if (force) ARM_FORCE_MAGIC.toFloat() else 0f))
+                    break
+                } catch (e: CommandRejected) {
+                    val reason = ArmReadiness.waitFor(e.statusTexts, initialising()) ?: throw e
+                    if (started.elapsedNow() + ARM_RETRY > readyTimeout) throw VehicleNotReady(vehicle.systemId, reason, readyTimeout)
+                    _waitingFor.value = reason
+                    delay(ARM_RETRY)
+                }
+            }
+        } finally {
+            _waitingFor.value = null
+        }
         confirm("arm", "armed", vehicle.telemetry.armed) { it }
+    }
+
+    /** What the vehicle's own reports say about it still booting: no home, no 3D fix, or a booting heartbeat. */
+    private fun initialising(): Boolean {
+        val t = vehicle.telemetry
+        val status = t.systemStatus.value
+        return t.home.value == null || (t.gps.value?.let { it.fixType < GPS_FIX_3D } ?: false) ||
+            status == MAV_STATE_UNINIT || status == MAV_STATE_BOOT || status == MAV_STATE_CALIBRATING
     }
 
     /** Disarms the motors ([force] even in flight, which drops a multicopter) and waits until telemetry shows it. */
@@ -312,5 +358,12 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
     private companion object {
         /** MAV_FRAME_GLOBAL_INT: altitude above mean sea level, lat/lon as degrees × 10⁷. */
         const val MAV_FRAME_GLOBAL = 5
+
+        /** Between arm attempts while the vehicle initialises: ArduPilot runs its pre-arm checks at 1 Hz. */
+        val ARM_RETRY = 1.seconds
+        const val GPS_FIX_3D = 3
+        const val MAV_STATE_UNINIT = 0
+        const val MAV_STATE_BOOT = 1
+        const val MAV_STATE_CALIBRATING = 2
     }
 }

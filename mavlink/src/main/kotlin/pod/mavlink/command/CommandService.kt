@@ -1,7 +1,9 @@
 package pod.mavlink.command
 
 import io.dronefleet.mavlink.common.CommandAck
-import io.dronefleet.mavlink.common.Statustext
+import kotlinx.coroutines.CoroutineStart
+import kotlinx.coroutines.channels.Channel
+import kotlinx.coroutines.launch
 import kotlinx.coroutines.selects.onTimeout
 import kotlinx.coroutines.selects.select
 import kotlinx.coroutines.sync.Mutex
@@ -9,6 +11,7 @@ import kotlinx.coroutines.sync.withLock
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.exchange
 import java.util.concurrent.atomic.AtomicLong
+import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.nanoseconds
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
@@ -56,16 +59,12 @@ public class CommandService internal constructor(
         val identity = vehicle.identity.value
         val ourSystem = vehicle.station.config.systemId
         val machine = CommandTransaction(command, timing, roundTrip())
-        val texts = ArrayList<String>()
+        val texts = RefusalTexts()
         // When the vehicle's autopilot last sent anything, on this exchange's clock (set on the collector's thread).
         val lastHeard = AtomicLong(-vehicle.lastHeartbeat.elapsedNow().inWholeNanoseconds)
         return vehicle.exchange(command.label, { inbound ->
             if (inbound.frame.componentId == identity.componentId) lastHeard.set(now())
             when (val message = inbound.message) {
-                is Statustext -> {
-                    if (message.severity().value() <= MAV_SEVERITY_WARNING) synchronized(texts) { texts += message.text().trimEnd('\u0000') }
-                    null
-                }
                 // Older autopilots leave the target empty (0); anything else must be us.
                 is CommandAck -> if (inbound.frame.componentId == identity.componentId && message.targetSystem() in setOf(0, ourSystem)) {
                     CommandWire.reply(message)?.takeIf { it.command == command.command }
@@ -73,26 +72,72 @@ public class CommandService internal constructor(
                 else -> null
             }
         }) { replies ->
-            var step = machine.start(now())
-            while (true) {
-                if (step.confirmation >= 0) {
-                    vehicle.send(CommandWire.encode(command, identity.systemId, identity.componentId, step.confirmation))
-                }
-                val outcome = step.outcome
-                if (outcome != null) {
-                    machine.error(outcome, synchronized(texts) { texts.toList() })?.let { throw it }
-                    return@exchange (outcome as CommandTransaction.Outcome.Accepted).reply
-                }
-                val wait = (step.wakeAt - now()).coerceAtLeast(0)
-                step = select {
-                    replies.onReceive { reply ->
-                        machine.onReply(reply, now()).also { if (reply.result == CommandResult.IN_PROGRESS) onProgress(machine.progress) }
-                    }
-                    if (step.wakeAt != Long.MAX_VALUE) onTimeout(wait.nanoseconds) { machine.onTimer(now(), vehicleTalking = now() - lastHeard.get() < TALKING_WITHIN_NANOS) }
-                }
+            // Texts come from the vehicle's joined STATUSTEXT lines (a long one arrives in chunks).
+            val listening = launch(start = CoroutineStart.UNDISPATCHED) {
+                vehicle.statusTexts.collect { if (it.severity.ordinal <= MAV_SEVERITY_WARNING) texts.add(it.text) }
             }
-            @Suppress("UNREACHABLE_CODE")
-            error("unreachable")
+            try {
+                var step = machine.start(now())
+                while (true) {
+                    if (step.confirmation >= 0) {
+                        vehicle.send(CommandWire.encode(command, identity.systemId, identity.componentId, step.confirmation))
+                    }
+                    val outcome = step.outcome
+                    if (outcome != null) {
+                        if (outcome is CommandTransaction.Outcome.Rejected) texts.awaitQuiet()
+                        machine.error(outcome, texts.lines())?.let { throw it }
+                        return@exchange (outcome as CommandTransaction.Outcome.Accepted).reply
+                    }
+                    val wait = (step.wakeAt - now()).coerceAtLeast(0)
+                    step = select {
+                        replies.onReceive { reply ->
+                            machine.onReply(reply, now()).also { if (reply.result == CommandResult.IN_PROGRESS) onProgress(machine.progress) }
+                        }
+                        if (step.wakeAt != Long.MAX_VALUE) onTimeout(wait.nanoseconds) { machine.onTimer(now(), vehicleTalking = now() - lastHeard.get() < TALKING_WITHIN_NANOS) }
+                    }
+                }
+                @Suppress("UNREACHABLE_CODE")
+                error("unreachable")
+            } finally {
+                listening.cancel()
+            }
+        }
+    }
+
+    /**
+     * The lines that explain a refusal: collected while the command is pending and for a moment
+     * after the refusal, each line once however often the vehicle repeats it.
+     */
+    private class RefusalTexts {
+        private val lines = LinkedHashSet<String>()
+        private val arrived = Channel<Unit>(Channel.CONFLATED)
+
+        fun add(line: String) {
+            synchronized(lines) { lines += line }
+            arrived.trySend(Unit)
+        }
+
+        fun lines(): List<String> = synchronized(lines) { lines.toList() }
+
+        /**
+         * ArduPilot answers COMMAND_ACK at once and sends the lines explaining it from its text
+         * queue right after (GCS_Common.cpp: GCS_MAVLINK::handle_command_long sends the ack;
+         * GCS::send_textv only queues the text, which GCS_MAVLINK::service_statustext sends on the
+         * next update_send pass, the same millisecond on SITL). So after a refusal, keep listening
+         * until the vehicle has been quiet for [QUIET_GAP] (several lines come back to back), at
+         * most [AT_MOST]: long enough for a queued line behind the ack on a slow radio, short
+         * enough that a refusal without any text is reported at once.
+         */
+        suspend fun awaitQuiet() {
+            arrived.tryReceive() // what came before the refusal does not extend the wait
+            kotlinx.coroutines.withTimeoutOrNull(AT_MOST) {
+                while (kotlinx.coroutines.withTimeoutOrNull(QUIET_GAP) { arrived.receive() } != null) Unit
+            }
+        }
+
+        private companion object {
+            val QUIET_GAP = 150.milliseconds
+            val AT_MOST = 500.milliseconds
         }
     }
 

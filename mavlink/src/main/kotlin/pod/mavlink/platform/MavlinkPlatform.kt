@@ -1,6 +1,10 @@
 package pod.mavlink.platform
 
 import kotlinx.coroutines.CoroutineName
+import kotlinx.coroutines.ExperimentalCoroutinesApi
+import kotlinx.coroutines.flow.combine
+import kotlinx.coroutines.flow.flatMapLatest
+import kotlinx.coroutines.flow.flowOf
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
@@ -17,11 +21,15 @@ import pod.mavlink.executor.ExecutorTiming
 import pod.mavlink.executor.MissionExecutor
 
 /**
- * The engine's [Platform] over a [GroundStation]: every vehicle the station hears, in system-id
- * order; [fly] runs a [MissionExecutor]; [makeSafe] holds (LOITER; a plane circles) or returns to
- * launch, confirmed by the vehicle's mode.
+ * The engine's [Platform] over a [GroundStation]: every vehicle the station hears that is usable,
+ * in system-id order; [fly] runs a [MissionExecutor]; [makeSafe] holds (LOITER; a plane circles)
+ * or returns to launch, confirmed by the vehicle's mode.
  *
- * The vehicle list follows the station for as long as the station runs.
+ * A vehicle is offered to the engine (and so to `pick`) only once its home and its position are
+ * known: a real autopilot has no home until its estimator sets an origin, tens of seconds after
+ * boot, and a program must be able to read `v.home.value` of a vehicle it picked. Until then the
+ * vehicle is listed in [initialising] with what it still lacks. The list follows the station for
+ * as long as the station runs.
  */
 public class MavlinkPlatform(
     /** The station the vehicles are heard on. */
@@ -34,16 +42,33 @@ public class MavlinkPlatform(
     private val payloads: (MavlinkVehicle) -> Set<String> = { DEFAULT_PAYLOADS },
 ) : Platform {
     private val adapters = HashMap<Int, MavlinkPlatformVehicle>()
-    private val _vehicles = MutableStateFlow(adapt(station.vehicles.value))
+    private val _vehicles = MutableStateFlow(adapt(usable(station.vehicles.value.values.map { it to lacking(it) })))
+    private val _initialising = MutableStateFlow(unusable(station.vehicles.value.values.map { it to lacking(it) }))
 
     init {
         require(timeScale > 0 && timeScale.isFinite()) { "timeScale must be a positive number, was $timeScale" }
         station.scope.launch(CoroutineName("platform-vehicles")) {
-            station.vehicles.collect { _vehicles.value = adapt(it) }
+            @OptIn(ExperimentalCoroutinesApi::class)
+            station.vehicles.flatMapLatest { heard ->
+                if (heard.isEmpty()) {
+                    flowOf(emptyList())
+                } else {
+                    combine(heard.values.map { v -> combine(v.telemetry.home, v.telemetry.position) { _, _ -> v to lacking(v) } }) { it.toList() }
+                }
+            }.collect { states ->
+                _vehicles.value = adapt(usable(states))
+                _initialising.value = unusable(states)
+            }
         }
     }
 
     override val vehicles: StateFlow<List<PlatformVehicle>> = _vehicles.asStateFlow()
+
+    /**
+     * Vehicles heard but not yet offered to the engine, by system id, each with what it still
+     * lacks ("home", "position", "home and position"): what a UI shows while a fleet boots.
+     */
+    public val initialising: StateFlow<Map<Int, String>> = _initialising.asStateFlow()
 
     override suspend fun fly(vehicle: PlatformVehicle, mission: Mission, report: suspend (MissionEvent) -> Unit) {
         MissionExecutor(mavlink(vehicle), mission, timing).run(report)
@@ -68,6 +93,18 @@ public class MavlinkPlatform(
         (vehicle as? MavlinkPlatformVehicle)?.vehicle?.takeIf { station.vehicles.value[it.systemId] === it }
             ?: station.vehicles.value[vehicle.id]
             ?: throw IllegalArgumentException("$vehicle is not a vehicle of this platform")
+
+    /** What [v] lacks to be usable, or null when its home and position are known. */
+    private fun lacking(v: MavlinkVehicle): String? {
+        val missing = listOfNotNull("home".takeIf { v.telemetry.home.value == null }, "position".takeIf { v.telemetry.position.value == null })
+        return missing.takeIf { it.isNotEmpty() }?.joinToString(" and ")
+    }
+
+    private fun usable(states: List<Pair<MavlinkVehicle, String?>>): Map<Int, MavlinkVehicle> =
+        states.filter { it.second == null }.associate { it.first.systemId to it.first }
+
+    private fun unusable(states: List<Pair<MavlinkVehicle, String?>>): Map<Int, String> =
+        states.mapNotNull { (v, lacking) -> lacking?.let { v.systemId to it } }.toMap()
 
     private fun adapt(heard: Map<Int, MavlinkVehicle>): List<PlatformVehicle> = synchronized(adapters) {
         heard.toSortedMap().map { (id, v) ->

@@ -79,6 +79,20 @@ class CommandServiceSpec : StringSpec({
         }
     }
 
+    "ArduPilot's order: the lines after the refusing ACK explain it too; a line repeated ten times (PX4) is shown once" {
+        withVehicle(answer = { m ->
+            if (m !is CommandLong) emptyList() else listOf(
+                ack(m.command().value(), CommandResult.FAILED),
+                Statustext.builder().severity(MavSeverity.MAV_SEVERITY_CRITICAL).text("Arm: Accels inconsistent").build(),
+                Statustext.builder().severity(MavSeverity.MAV_SEVERITY_CRITICAL).text("Arm: AHRS: waiting for home").build(),
+            ) + List(10) { Statustext.builder().severity(MavSeverity.MAV_SEVERITY_CRITICAL).text("Arm: AHRS: waiting for home").build() }
+        }) { v, _ ->
+            val error = shouldThrow<CommandRejected> { v.commands.send(VehicleCommand(ARM, param1 = 1f)) }
+            error.statusTexts shouldBe listOf("Arm: Accels inconsistent", "Arm: AHRS: waiting for home")
+            error.message shouldBe "MAV_CMD_COMPONENT_ARM_DISARM was FAILED: Arm: Accels inconsistent; Arm: AHRS: waiting for home"
+        }
+    }
+
     "IN_PROGRESS reports progress until the final ACCEPTED, without resending" {
         withVehicle(answer = { m ->
             if (m !is CommandLong) emptyList() else listOf(

@@ -36,6 +36,9 @@ import pod.sim.autopilot.MavResult.UNSUPPORTED
 internal class Commands(private val ap: SimAutopilot) {
     private var calibration: Calibration? = null
 
+    /** Lines explaining the command being handled, sent with its ack in the flavour's order. */
+    private val explanations = ArrayList<SimOutput.Text>()
+
     private class Calibration(val request: CommandRequest, var elapsed: Double = 0.0, var reported: Int = 0)
 
     /** Handles [cmd]; its ACK (and any STATUSTEXT) is queued on the autopilot. */
@@ -63,7 +66,7 @@ internal class Commands(private val ap: SimAutopilot) {
     /** Handles the legacy SET_MODE message; ArduPilot acknowledges it as "command 11", PX4 as DO_SET_MODE. */
     fun handleSetMode(baseMode: Int, customMode: Long, sourceSystem: Int, sourceComponent: Int) {
         val result = setMode(baseMode, customMode)
-        ap.emit(SimOutput.Ack(if (ap.isPx4) DO_SET_MODE else SET_MODE_MESSAGE, result, 0, sourceSystem, sourceComponent))
+        answer(SimOutput.Ack(if (ap.isPx4) DO_SET_MODE else SET_MODE_MESSAGE, result, 0, sourceSystem, sourceComponent))
     }
 
     /** Advances long-running commands by [dt] seconds. */
@@ -82,9 +85,25 @@ internal class Commands(private val ap: SimAutopilot) {
     }
 
     private fun ack(cmd: CommandRequest, result: Int, progress: Int) =
-        ap.emit(SimOutput.Ack(cmd.command, result, progress, cmd.sourceSystem, cmd.sourceComponent))
+        answer(SimOutput.Ack(cmd.command, result, progress, cmd.sourceSystem, cmd.sourceComponent))
 
-    private fun refuse(text: String, severity: Int = Severity.CRITICAL) = ap.text(severity, text)
+    /**
+     * Queues [ack] and the lines explaining it. ArduPilot sends the COMMAND_ACK first and the text
+     * after it: GCS_Common.cpp, GCS_MAVLINK::handle_command_long sends the ack as soon as the
+     * handler returns, while GCS::send_textv only queues the STATUSTEXT for
+     * GCS_MAVLINK::service_statustext to send on the next update_send pass. PX4 keeps the text
+     * first (commander logs before it publishes the ack), so Pod is tested with both orders.
+     */
+    private fun answer(ack: SimOutput.Ack) {
+        if (ap.isPx4) explanations.forEach(ap::emit)
+        ap.emit(ack)
+        if (!ap.isPx4) explanations.forEach(ap::emit)
+        explanations.clear()
+    }
+
+    private fun refuse(text: String, severity: Int = Severity.CRITICAL) {
+        explanations += SimOutput.Text(severity, text)
+    }
 
     private fun armDisarm(cmd: CommandRequest): Int {
         val forced = cmd.param2.toInt() == ARM_FORCE_MAGIC
@@ -92,8 +111,8 @@ internal class Commands(private val ap: SimAutopilot) {
             1 -> when {
                 ap.armed -> ACCEPTED
                 forced -> ACCEPTED.also { ap.arm() }
-                else -> armingProblem()?.let { problem ->
-                    refuse(problem)
+                else -> armingProblems().takeIf { it.isNotEmpty() }?.let { problems ->
+                    problems.forEach { refuse(it) }
                     if (ap.isPx4) TEMPORARILY_REJECTED else FAILED
                 } ?: ACCEPTED.also { ap.arm() }
             }
@@ -107,27 +126,45 @@ internal class Commands(private val ap: SimAutopilot) {
         }
     }
 
-    /** The STATUSTEXT explaining why arming is refused now, or null when the vehicle may arm. */
-    fun armingProblem(): String? {
-        val modeOk = Modes.armable(ap.autopilot, ap.type, ap.modeName, if (ap.isPx4) 0 else ap.params.valueOf("AUTO_OPTIONS")?.toInt() ?: 0)
-        if (ap.isPx4) {
-            return when {
-                !ap.positionReady -> "Arming denied: no valid global position estimate"
-                ap.charge < ap.params["BAT_LOW_THR"] -> "Arming denied: low battery"
-                !modeOk -> "Arming denied: mode not armable"
-                calibration != null -> "Arming denied: calibration in progress"
-                else -> null
-            }
-        }
-        val checks = ap.params["ARMING_CHECK"].toInt() != 0
-        return when {
-            checks && !ap.positionReady -> "PreArm: Need 3D Fix"
-            checks && packVoltage(ap.charge) < ap.params["BATT_ARM_VOLT"] -> "PreArm: Battery 1 below minimum arming voltage"
-            !modeOk -> "Arm: Mode not armable"
-            calibration != null -> "PreArm: Calibration in progress"
-            else -> null
-        }
+    /**
+     * Every STATUSTEXT explaining why arming is refused now (empty when the vehicle may arm).
+     * ArduPilot runs all its checks and reports each failure (AP_Arming::pre_arm_checks and
+     * AP_Arming_Copter::run_pre_arm_checks chain them with `&`); PX4 reports the first.
+     */
+    fun armingProblems(): List<String> {
+        val checks = if (ap.isPx4) px4ArmingChecks else arduPilotArmingChecks
+        val failed = checks.mapNotNull { it() }
+        return if (ap.isPx4) failed.take(1) else failed
     }
+
+    private fun modeArmable(): Boolean =
+        Modes.armable(ap.autopilot, ap.type, ap.modeName, if (ap.isPx4) 0 else ap.params.valueOf("AUTO_OPTIONS")?.toInt() ?: 0)
+
+    private fun checksEnabled(): Boolean = ap.params["ARMING_CHECK"].toInt() != 0
+
+    /** PX4's arming checks in the order commander reports them; a further check is one more entry. */
+    private val px4ArmingChecks: List<() -> String?> = listOf(
+        { "Arming denied: no valid global position estimate".takeIf { !ap.positionReady } },
+        { "Arming denied: low battery".takeIf { ap.charge < ap.params["BAT_LOW_THR"] } },
+        { "Arming denied: mode not armable".takeIf { !modeArmable() } },
+        { "Arming denied: calibration in progress".takeIf { calibration != null } },
+    )
+
+    /**
+     * ArduPilot's checks on an arm command, each the line it sends when it fails; a further check
+     * is one more entry. The first two clear by waiting after boot, as on SITL (texts as ArduPilot
+     * 4.7 SITL sent them): the inertial sensors' consistency (AP_Arming::ins_checks,
+     * ins_accels_consistent) and home, which exists only once the EKF has an origin
+     * (AP_Arming::gps_checks asks AP_AHRS::home_is_set: "AHRS: waiting for home"). An arm
+     * command's failures start "Arm: " (AP_Arming::check_failed while arming).
+     */
+    private val arduPilotArmingChecks: List<() -> String?> = listOf(
+        { "Arm: Accels inconsistent".takeIf { !ap.sensorsReady } },
+        { "Arm: AHRS: waiting for home".takeIf { !ap.positionReady } },
+        { "PreArm: Battery 1 below minimum arming voltage".takeIf { checksEnabled() && packVoltage(ap.charge) < ap.params["BATT_ARM_VOLT"] } },
+        { "Arm: Mode not armable".takeIf { !modeArmable() } },
+        { "PreArm: Calibration in progress".takeIf { calibration != null } },
+    )
 
     private fun px4Mode(main: Int, sub: Int): Long = (main.toLong() shl 16) or (sub.toLong() shl 24)
 
@@ -242,7 +279,7 @@ internal class Commands(private val ap: SimAutopilot) {
             if (!ap.mission.hasMission()) return TEMPORARILY_REJECTED.also { refuse("Mission start denied! No valid mission") }
             val firstItem = cmd.param1.toInt()
             if (!ap.armed) {
-                armingProblem()?.let { problem -> refuse(problem); return TEMPORARILY_REJECTED }
+                armingProblems().takeIf { it.isNotEmpty() }?.let { problems -> problems.forEach { refuse(it) }; return TEMPORARILY_REJECTED }
                 ap.arm()
             }
             if (firstItem >= 0) ap.setCurrent(firstItem)

@@ -3,8 +3,9 @@ package pod.sim.autopilot
 /**
  * The vehicle side of the parameter protocol. Reads answer with PARAM_VALUE; a list request sends
  * every parameter with its index and the count; a write answers with the value now stored. An
- * unknown name gets no answer (ArduPilot and PX4 both stay silent); a read-only or out-of-range
- * write answers with the unchanged value (ArduPilot adds "Param write denied" for read-only ones).
+ * unknown name gets no answer (ArduPilot and PX4 both stay silent); a read-only write (and on PX4
+ * an out-of-range one) answers with the unchanged value (ArduPilot adds "Param write denied").
+ * ArduPilot stores out-of-range values (GCS_Param.cpp, GCS_MAVLINK::handle_param_set).
  */
 internal class ParamService(private val ap: SimAutopilot) {
     private val params get() = ap.params

@@ -10,7 +10,8 @@ import pod.sim.autopilot.ParamType.REAL32
 /**
  * The parameters each simulated flavour carries: a realistic subset, with the real names, units
  * and defaults, that the simulated flight reads (so a PARAM_SET changes how it flies). Ranges are
- * the simulator's own sanity bounds; real autopilots mostly store whatever they are sent.
+ * the documented ones; the simulated PX4 refuses values outside them, the simulated ArduPilot
+ * stores whatever it is sent, as the real one does.
  */
 internal object ParamTables {
 
@@ -30,7 +31,8 @@ internal object ParamTables {
         ParamDef("BATT_LOW_VOLT", 14.0, REAL32, 0.0, 100.0),
         // Real default 0 (check off); the simulator refuses to arm a 4S pack below ~21 % charge.
         ParamDef("BATT_ARM_VOLT", 14.6, REAL32, 0.0, 100.0),
-        ParamDef("STAT_BOOTCNT", 1.0, INT16, readOnly = true),
+        // An ordinary writable parameter on ArduPilot (AP_Stats.cpp declares it without a read-only flag).
+        ParamDef("STAT_BOOTCNT", 1.0, INT16),
     )
 
     private val arduCopter = listOf(
@@ -47,6 +49,8 @@ internal object ParamTables {
         ParamDef("CIRCLE_RATE", 20.0, REAL32, -90.0, 90.0), // deg/s
         ParamDef("AUTO_OPTIONS", 0.0, INT32, 0.0, Int.MAX_VALUE.toDouble()), // bit 0: allow arming in AUTO
         ParamDef("FS_GCS_ENABLE", 0.0, INT8, 0.0, 7.0),
+        // Read-only (@ReadOnly in ArduCopter/Parameters.cpp, k_software_type 10): a write is denied with a STATUSTEXT.
+        ParamDef("SYSID_SW_TYPE", 10.0, INT8, readOnly = true),
     )
 
     private val arduPlane = listOf(
@@ -63,6 +67,8 @@ internal object ParamTables {
         ParamDef("TECS_SINK_MAX", 5.0, REAL32, 0.0, 20.0), // m/s
         ParamDef("LAND_DISARMDELAY", 20.0, INT8, 0.0, 127.0), // s
         ParamDef("FS_GCS_ENABL", 0.0, INT8, 0.0, 2.0),
+        // Read-only (@ReadOnly in ArduPlane/Parameters.cpp, k_software_type 0).
+        ParamDef("SYSID_SW_TYPE", 0.0, INT8, readOnly = true),
     )
 
     private fun px4Common(systemId: Int) = listOf(

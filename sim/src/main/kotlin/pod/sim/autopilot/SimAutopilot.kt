@@ -61,8 +61,10 @@ internal class SimAutopilot(
     home: Location,
     charge: Double,
     val missionServer: MissionServer,
-    /** Simulated seconds after boot before GPS and estimator are ready to arm. */
+    /** Simulated seconds after boot before the GPS has a 3D fix and the estimator sets its origin (and home). */
     private val readyAfter: Double = 2.0,
+    /** Simulated seconds after boot before the sensors pass the pre-arm checks (never before [readyAfter] matters). */
+    private val sensorsReadyAfter: Double = readyAfter,
 ) {
     val multirotor: Boolean = type.isMultirotor || type == VehicleType.OTHER
     val isPx4: Boolean get() = autopilot == Autopilot.PX4
@@ -94,8 +96,16 @@ internal class SimAutopilot(
     val reached = ArrayList<Int>()
     val photos = ArrayList<PhotoEvent>()
 
-    /** True once the simulated GPS has a fix and the estimator is ready. */
+    /**
+     * True once the simulated GPS has a fix and the estimator has set its origin. ArduPilot has no
+     * home before that: Copter::update_home_from_EKF (ArduCopter/commands.cpp) sets home to the
+     * current location only once AP_AHRS has an origin, and GCS_MAVLINK::send_home_position sends
+     * nothing while AP_AHRS::home_is_set() is false.
+     */
     val positionReady: Boolean get() = time >= readyAfter
+
+    /** True once the inertial sensors have settled (ArduPilot SITL: "Accels inconsistent" until then). */
+    val sensorsReady: Boolean get() = time >= sensorsReadyAfter
 
     /** The messages to send, oldest first; empties the queue. */
     fun drain(): List<SimOutput> = outbox.toList().also { outbox.clear() }
@@ -166,7 +176,10 @@ internal class SimAutopilot(
 
     /** Advances simulated time by [dt] seconds. */
     fun step(dt: Double) {
+        val wasReady = positionReady
         time += dt
+        // Setting home announces it (AP_AHRS::set_home has GCS send HOME_POSITION to every link).
+        if (positionReady && !wasReady) emit(SimOutput.HomeChanged)
         charge = (if (armed) charge - dt / FULL_DRAIN_SECONDS else charge + dt / FULL_RECHARGE_SECONDS).coerceIn(0.0, 1.0)
         val guidance = guidance()
         body = airframe.step(body, guidance, performance(), ground, armed, dt)

@@ -4,8 +4,9 @@ import pod.core.vehicle.Autopilot
 import kotlin.math.roundToLong
 
 /** MAV_PARAM_TYPE of a parameter. */
-internal enum class ParamType(val mav: Int, val isInteger: Boolean) {
-    UINT8(1, true), INT8(2, true), UINT16(3, true), INT16(4, true), UINT32(5, true), INT32(6, true), REAL32(9, false),
+internal enum class ParamType(val mav: Int, val isInteger: Boolean, val lowest: Double = 0.0, val highest: Double = 0.0) {
+    UINT8(1, true, 0.0, 255.0), INT8(2, true, -128.0, 127.0), UINT16(3, true, 0.0, 65535.0), INT16(4, true, -32768.0, 32767.0),
+    UINT32(5, true, 0.0, 4294967295.0), INT32(6, true, -2147483648.0, 2147483647.0), REAL32(9, false),
 }
 
 /** One parameter: name, default, type, the range the simulator accepts, and whether it can be written. */
@@ -46,13 +47,20 @@ internal class SimParameters(private val autopilot: Autopilot, definitions: List
     /** The current value of [name], or null when the table has no such parameter. */
     fun valueOf(name: String): Double? = byName[name]?.let { values[it] }
 
-    /** Stores [value] for [name] after checking that it exists, is writable and in range. */
+    /**
+     * Stores [value] for [name] after checking that it exists and is writable. ArduPilot stores any
+     * finite number (GCS_Param.cpp, GCS_MAVLINK::handle_param_set checks only that the parameter
+     * exists and may be set; AP_Param::set_float clamps integers to their type's range), so only
+     * PX4 refuses a value outside the parameter's range here.
+     */
     fun set(name: String, value: Double): ParamWrite {
         val i = byName[name] ?: return ParamWrite.UNKNOWN
         val def = defs[i]
         if (def.readOnly) return ParamWrite.READ_ONLY
-        if (!value.isFinite() || value < def.min || value > def.max) return ParamWrite.OUT_OF_RANGE
-        values[i] = if (def.type.isInteger) value.roundToLong().toDouble() else value.toFloat().toDouble()
+        if (!value.isFinite()) return ParamWrite.OUT_OF_RANGE
+        if (autopilot == Autopilot.PX4 && (value < def.min || value > def.max)) return ParamWrite.OUT_OF_RANGE
+        val stored = if (def.type.isInteger) value.roundToLong().toDouble().coerceIn(def.type.lowest, def.type.highest) else value.toFloat().toDouble()
+        values[i] = stored
         return ParamWrite.STORED
     }
 

@@ -10,6 +10,8 @@ import pod.core.units.m
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.LandedState
 import pod.core.vehicle.VehicleType
+import pod.mavlink.mission.MissionServer
+import pod.mavlink.mission.MissionServerFlavor
 import pod.sim.flight.horizontalDistance
 import kotlin.math.roundToLong
 
@@ -40,10 +42,59 @@ class CommandTest : StringSpec({
         val ap = autopilot()
         val out = ArrayList<SimOutput>()
         ap.command(CommandRequest(400, param1 = 1f), out) shouldBe MavResult.FAILED
-        texts(out).map { it.text } shouldContain "PreArm: Need 3D Fix"
+        texts(out).map { it.text } shouldContain "Arm: AHRS: waiting for home"
         ap.run(2.5)
         ap.armCommand() shouldBe MavResult.ACCEPTED
         ap.armCommand() shouldBe MavResult.ACCEPTED
+    }
+
+    "ArduPilot answers a refused command with the COMMAND_ACK first and the STATUSTEXT lines after it; PX4 the other way round" {
+        val ardu = autopilot(charge = 0.1)
+        val out = ArrayList<SimOutput>()
+        ardu.command(CommandRequest(400, param1 = 1f), out) shouldBe MavResult.FAILED
+        out.map { it::class.simpleName } shouldBe listOf("Ack", "Text", "Text", "Text") // still booting, and a flat battery
+        texts(out).map { it.text } shouldBe listOf("Arm: Accels inconsistent", "Arm: AHRS: waiting for home", "PreArm: Battery 1 below minimum arming voltage")
+        val px4 = autopilot(Autopilot.PX4, charge = 0.1)
+        out.clear()
+        px4.command(CommandRequest(400, param1 = 1f), out) shouldBe MavResult.TEMPORARILY_REJECTED
+        out.map { it::class.simpleName } shouldBe listOf("Text", "Ack")
+    }
+
+    "a booting ArduPilot: no home until its estimator has an origin, then one HOME_POSITION; sensors settle later and it arms" {
+        val ap = SimAutopilot(
+            Autopilot.ARDUPILOT, VehicleType.FIXED_WING, 1, HOME, 1.0,
+            MissionServer(MissionServerFlavor.ARDUPILOT), readyAfter = 20.0, sensorsReadyAfter = 23.0,
+        )
+        val early = ArrayList<SimOutput>()
+        ap.run(1.0)
+        ap.command(CommandRequest(400, param1 = 1f), early) shouldBe MavResult.FAILED
+        texts(early).map { it.text } shouldBe listOf("Arm: Accels inconsistent", "Arm: AHRS: waiting for home")
+        ap.state().positionReady shouldBe false
+        val announced = ArrayList<SimOutput>()
+        ap.run(19.5) { announced += it.drain() }
+        announced.count { it == SimOutput.HomeChanged } shouldBe 1
+        ap.positionReady shouldBe true
+        val homeSet = ArrayList<SimOutput>()
+        ap.command(CommandRequest(400, param1 = 1f), homeSet) shouldBe MavResult.FAILED // home set, sensors still settling
+        texts(homeSet).map { it.text } shouldBe listOf("Arm: Accels inconsistent")
+        ap.run(3.0)
+        ap.armCommand() shouldBe MavResult.ACCEPTED
+    }
+
+    "ArduPilot stores what it is sent: out-of-range values and STAT_BOOTCNT, integers clamped to their type" {
+        val ardu = autopilot()
+        ardu.paramService.set("WPNAV_SPEED", 1e9f)
+        ardu.drain().filterIsInstance<SimOutput.Param>().size shouldBe 1
+        ardu.params["WPNAV_SPEED"] shouldBe 1e9
+        ardu.paramService.set("STAT_BOOTCNT", 9f)
+        texts(ardu.drain()) shouldBe emptyList()
+        ardu.params["STAT_BOOTCNT"] shouldBe 9.0
+        ardu.paramService.set("RTL_ALT", 1e12f)
+        ardu.drain()
+        ardu.params["RTL_ALT"] shouldBe 2147483647.0
+        ardu.paramService.set("LAND_SPEED", 1e6f)
+        ardu.drain()
+        ardu.params["LAND_SPEED"] shouldBe 32767.0
     }
 
     "ArduCopter refuses to arm in AUTO and to enter AUTO armed on the ground without a take-off item" {
@@ -191,13 +242,10 @@ class CommandTest : StringSpec({
         ardu.params.wireValue(ardu.params.index("DISARM_DELAY")!!) shouldBe 5f
         ardu.paramService.set("NO_SUCH_PARAM", 1f)
         ardu.drain().filterIsInstance<SimOutput.Param>().size shouldBe 1 // DISARM_DELAY only; the unknown one is ignored
-        ardu.paramService.set("STAT_BOOTCNT", 9f)
+        ardu.paramService.set("SYSID_SW_TYPE", 3f)
         val out = ardu.drain()
-        texts(out).map { it.text } shouldContain "Param write denied (STAT_BOOTCNT)"
-        ardu.params["STAT_BOOTCNT"] shouldBe 1.0
-        ardu.paramService.set("RTL_ALT", 1e9f)
-        ardu.drain().filterIsInstance<SimOutput.Param>().size shouldBe 1
-        ardu.params["RTL_ALT"] shouldBe 1500.0
+        texts(out).map { it.text } shouldContain "Param write denied (SYSID_SW_TYPE)"
+        ardu.params["SYSID_SW_TYPE"] shouldBe 10.0
 
         val px4 = autopilot(Autopilot.PX4)
         val sysId = px4.params.index("MAV_SYS_ID")!!
