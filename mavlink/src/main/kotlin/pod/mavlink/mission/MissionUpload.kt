@@ -43,6 +43,7 @@ internal class MissionUpload(
     private var pendingErrorAt = 0L
 
     private var accepted = false
+    private var restarts = 0
     private var highestSent = -1
 
     /** Items the vehicle has confirmed: those before the newest it asked for, or all once it accepted. */
@@ -86,6 +87,20 @@ internal class MissionUpload(
                     )
                 },
             )
+        }
+        if (phase == Phase.SENDING && timeoutsInARow >= timing.retries / 2 && now - lastProgressAt >= timing.patience.inWholeNanoseconds / 4 && restarts < MAX_RESTARTS) {
+            // Long silence mid-upload: the vehicle has probably dropped the transfer (MAVSDK's
+            // vehicle side does, silently, after a few timeouts: ReceiveIncomingMission). Start over
+            // with the count; ArduPilot restarts for the same sender, PX4 goes on with its requests.
+            restarts++
+            timeoutsInARow = 0
+            lastProgressAt = now
+            phase = Phase.COUNTING
+            newest = -1
+            staleSeq = -1
+            pendingError = null
+            firstSentAt.fill(RETRANSMITTED)
+            return MissionStep(listOf(opening()), rtt.timeoutNanos)
         }
         rtt.backOff()
         val resend = when (phase) {
@@ -197,6 +212,9 @@ internal class MissionUpload(
 
         /** Most items one late request makes us send: enough to catch up with a vehicle ahead, no flood. */
         const val MAX_PROBE = 8
+
+        /** Start-overs after the vehicle fell silent mid-upload. */
+        const val MAX_RESTARTS = 6
 
         /** Silence after an ambiguous error answer before it counts: past ArduPilot's 1 s re-request. */
         const val ERROR_SILENCE_NANOS = 1_500_000_000L
