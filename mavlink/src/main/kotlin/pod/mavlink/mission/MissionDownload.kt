@@ -84,8 +84,12 @@ internal class MissionDownload(
         // we never saw); only a new MISSION_REQUEST_LIST revives it. Stateless vehicles never do.
         // Counted in time as well as in timeouts: at 30 % loss, ten short timeouts in a row happen
         // every few hundred items, and a needless restart walks the whole list again.
-        if (inOrder && timeoutsInARow >= timing.retries / 2 && now - lastProgressAt >= timing.patience.inWholeNanoseconds / 4 && restarts < MAX_RESTARTS) {
-            strict = true // a new transfer on the vehicle's side starts at item 0 (MAVSDK, PX4)
+        if (timeoutsInARow >= timing.retries / 2 && now - lastProgressAt >= timing.patience.inWholeNanoseconds / 4 && restarts < MAX_RESTARTS) {
+            // Only a vehicle that dropped the transfer stays silent this long (an ERROR that ended
+            // it may have been lost): that is in-order behaviour (PX4, MAVSDK), and a new transfer
+            // on the vehicle's side starts at item 0. A stateless vehicle just answers again.
+            inOrder = true
+            strict = true
             return restart()
         }
         if (!sequentialRetry && inFlight >= 2 && receivedCount > 0 && !aheadSeen) {

@@ -182,6 +182,25 @@ class MissionTransferPropertyTest : StringSpec({
         withClue("at most 30 % loss: nearly every partial write goes through") { written shouldBeGreaterThan 90 }
     }
 
+    "a vehicle that serves downloads only in order, without saying so, is learned: 20 of 20 downloads at 10 % and 30 % loss" {
+        // A PX4-flavoured server (in order only, ERROR out of turn, silent drop after 5 s idle)
+        // behind a heartbeat that does not say PX4: the download starts windowed and must learn.
+        val failures = ArrayList<String>()
+        for (drop in listOf(0.1, 0.3)) {
+            for (seed in 1L..20L) {
+                val items = randomItems(MissionType.MISSION, 15, Random(seed)).storedBy(MissionServerFlavor.PX4)
+                val server = MissionServer(MissionServerFlavor.PX4).apply { load(MissionType.MISSION, items) }
+                val faults = Faults(drop = drop, minDelayMs = 1, maxDelayMs = 3)
+                val link = VirtualLink(server, faults, faults, seed)
+                val download = MissionDownload(MissionType.MISSION, TransferTiming(), inOrder = false)
+                val outcome = link.run(download::start, download::onMessage, download::onTimeout)
+                val back = (outcome as? TransferOutcome.Done<List<MissionItem>>)?.value?.map { it.copy(current = false) }
+                if (back != items) failures += "drop $drop seed $seed: $outcome"
+            }
+        }
+        failures shouldBe emptyList()
+    }
+
     "with 10% loss each way, 20 seeded uploads of 200 items into either flavour all succeed" {
         val failures = ArrayList<String>()
         for (seed in 1L..20L) {
