@@ -57,6 +57,7 @@ internal class MissionUpload(
 
     fun onMessage(message: MissionMessage, now: Long): MissionStep<Unit> {
         if (phase == Phase.ENDED) return MissionStep.NOTHING
+        if ((message is MissionMessage.Request && message.type == type) || (message is MissionMessage.Ack && message.type == type)) lastHeardAt = now
         return when (message) {
             is MissionMessage.Request -> if (message.type == type) onRequest(message.seq - first, now) else MissionStep.NOTHING
             is MissionMessage.Ack -> if (message.type == type) onAck(message.result, now) else MissionStep.NOTHING
@@ -65,6 +66,7 @@ internal class MissionUpload(
     }
 
     private var lastProgressAt = Long.MIN_VALUE
+    private var lastHeardAt = Long.MIN_VALUE // anything from the vehicle about this list
 
     fun onTimeout(now: Long): MissionStep<Unit> {
         if (phase == Phase.ENDED) return MissionStep.NOTHING
@@ -101,6 +103,12 @@ internal class MissionUpload(
             pendingError = null
             firstSentAt.fill(RETRANSMITTED)
             return MissionStep(listOf(opening()), rtt.timeoutNanos)
+        }
+        if (phase == Phase.AWAITING_ACK && timeoutsInARow >= 6 && now - maxOf(lastProgressAt, lastHeardAt) >= QUIET_AFTER_LAST_NANOS) {
+            // The last item went out again and again and nothing came back: ArduPilot would answer
+            // ERROR and PX4 ACCEPTED to a repeat, but MAVSDK's vehicle side has finished and answers
+            // nothing (its handlers are gone once it sent the ACK we lost). A download tells.
+            return end(TransferOutcome.AckMissing)
         }
         rtt.backOff()
         val resend = when (phase) {
@@ -212,6 +220,9 @@ internal class MissionUpload(
 
         /** Most items one late request makes us send: enough to catch up with a vehicle ahead, no flood. */
         const val MAX_PROBE = 8
+
+        /** Silence after the last item before its lost ACK is looked for with a download. */
+        const val QUIET_AFTER_LAST_NANOS = 2_000_000_000L
 
         /** Start-overs after the vehicle fell silent mid-upload. */
         const val MAX_RESTARTS = 6
