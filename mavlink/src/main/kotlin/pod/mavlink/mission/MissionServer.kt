@@ -202,7 +202,8 @@ public class MissionServer(
         if (busy(request.type)) return deny(request.type)
         if (flavor == MissionServerFlavor.PX4) {
             // A download left without requests for its protocol timeout is dropped, silently
-            // (MavlinkMissionManager::check_active_mission: back to IDLE after 5 s without a message).
+            // (MavlinkMissionManager::send, "check for timed-out operations": back to IDLE when
+            // _action_timeout, 5 s by default, passes without a message).
             if (sending != null && now - sendingActivity >= giveUpNanos) sending = null
             // PX4 serves a download strictly in order: the expected item or a repeat of the last
             // one; anything else ends the transfer with ERROR, and requests while idle are ignored.
