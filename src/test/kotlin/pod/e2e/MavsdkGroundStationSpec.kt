@@ -52,13 +52,14 @@ class MavsdkGroundStationSpec : StringSpec({
         }
     }
 
-    "MAVSDK uploads into a simulated ArduPilot vehicle through legacy MISSION_REQUESTs; item 0 becomes home" {
+    "MAVSDK uploads into a simulated ArduPilot vehicle through legacy MISSION_REQUESTs; item 0 becomes home, the rest ArduPilot's own form" {
         val items = variedMission(30)
         mavsdkUploads(Autopilot.ARDUPILOT, items) { run, sim ->
             run.system["autopilot"] shouldBe "ARDUPILOT"
-            val home = sim.missionServer.home!!
-            sim.missionServer.list(MissionType.MISSION) shouldBe listOf(home) + items.drop(1).map { it.copy(current = false) }
-            run.items shouldBe listOf(home.copy(current = true)) + items.drop(1).map { it.copy(current = false) }
+            val home = pod.mavlink.mission.ArduPilotMissionStorage.stored(sim.missionServer.home!!, fixedWing = false)
+            val kept = pod.mavlink.mission.ArduPilotMissionStorage.stored(items.drop(1), fixedWing = false)
+            sim.missionServer.list(MissionType.MISSION) shouldBe listOf(home) + kept
+            run.items shouldBe listOf(home.copy(current = true)) + kept
         }
     }
 })

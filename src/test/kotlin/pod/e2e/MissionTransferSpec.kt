@@ -81,8 +81,9 @@ class MissionTransferSpec : StringSpec({
             vehicle.mission.upload(waypoints(5))
             vehicle.mission.upload(waypoints(4, MissionType.FENCE), MissionType.FENCE)
             vehicle.mission.upload(waypoints(3, MissionType.RALLY), MissionType.RALLY)
-            vehicle.mission.download(MissionType.FENCE) shouldBe waypoints(4, MissionType.FENCE)
-            vehicle.mission.download(MissionType.RALLY) shouldBe waypoints(3, MissionType.RALLY)
+            // ArduPilot keeps fence and rally items as points and sends them back with autocontinue 0.
+            vehicle.mission.download(MissionType.FENCE) shouldBe waypoints(4, MissionType.FENCE).map { it.copy(autocontinue = false) }
+            vehicle.mission.download(MissionType.RALLY) shouldBe waypoints(3, MissionType.RALLY).map { it.copy(autocontinue = false) }
             vehicle.mission.clear(MissionType.FENCE)
             vehicle.mission.download(MissionType.FENCE).shouldBeEmpty()
             vehicle.mission.download(MissionType.RALLY).size shouldBe 3

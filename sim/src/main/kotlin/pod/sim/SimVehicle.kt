@@ -85,7 +85,11 @@ public class SimVehicle(
      */
     public val missionServer: MissionServer = MissionServer(
         if (config.autopilot == pod.core.vehicle.Autopilot.PX4) MissionServerFlavor.PX4 else MissionServerFlavor.ARDUPILOT,
-    )
+        fixedWing = config.type == pod.core.vehicle.VehicleType.FIXED_WING,
+    ).apply {
+        // The mission server's clock is wall time since boot (clockNanos); the config speaks simulated time.
+        storageReadyAt = (config.missionStorageReadyAfter / config.timeScale).inWholeNanoseconds
+    }
 
     /** The simulated autopilot; everything touching it runs on the vehicle's single-threaded dispatcher. */
     internal val autopilot = SimAutopilot(

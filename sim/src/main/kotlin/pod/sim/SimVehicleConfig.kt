@@ -55,6 +55,13 @@ public data class SimVehicleConfig(
     public val parameters: Map<String, Double> = emptyMap(),
     /** Simulated time the physics advances per integration step. */
     public val physicsStep: Duration = 50.milliseconds,
+    /**
+     * Simulated time after boot before the mission service takes uploads: until then an
+     * ArduPilot-flavoured vehicle answers MISSION_COUNT with MAV_MISSION_NO_SPACE, as real
+     * ArduPilot does while its mission storage is not yet initialised (a few seconds). Zero by
+     * default so that tests which do not test this need not wait.
+     */
+    public val missionStorageReadyAfter: Duration = Duration.ZERO,
 ) {
     init {
         require(systemId in 1..254) { "systemId must be in 1..254, was $systemId" }
@@ -63,6 +70,7 @@ public data class SimVehicleConfig(
         require(timeScale > 0 && timeScale <= 1000) { "timeScale must be in (0, 1000], was $timeScale" }
         require(!positionReadyAfter.isNegative()) { "positionReadyAfter must not be negative, was $positionReadyAfter" }
         require(!sensorsReadyAfter.isNegative()) { "sensorsReadyAfter must not be negative, was $sensorsReadyAfter" }
+        require(!missionStorageReadyAfter.isNegative()) { "missionStorageReadyAfter must not be negative, was $missionStorageReadyAfter" }
         require(physicsStep > Duration.ZERO && physicsStep <= 1.seconds) { "physicsStep must be in (0, 1 s], was $physicsStep" }
         streamRates.forEach { (id, hz) -> require(hz >= 0 && hz <= 1000) { "stream rate for message $id must be in [0, 1000] Hz, was $hz" } }
     }

@@ -9,16 +9,26 @@ import kotlin.time.Duration.Companion.nanoseconds
  * MISSION_REQUEST_LIST, then MISSION_COUNT, then the items: up to a window of requests is kept in
  * flight, and on a timeout only the requests still unanswered are repeated. The window grows by one
  * after each window's worth of answers and halves when more than half of it timed out, so a
- * vehicle that drops bursts is soon asked one item at a time. A vehicle that only serves requests
- * in order ([inOrder]: PX4 ends the transfer with MISSION_ACK ERROR when asked out of turn) is asked
- * one item at a time, and from the start again when it drops the transfer. Ends by sending
+ * vehicle that drops bursts is soon asked one item at a time.
+ *
+ * Some vehicles serve requests only in order: PX4 ends the transfer with MISSION_ACK ERROR when
+ * asked out of turn; MAVSDK's vehicle-side server silently ignores a request for anything past the
+ * item after the last it sent ("sequence incorrect") and drops the whole transfer, silently, after
+ * a few repeats or timeouts ("timeout: retries exceeded"; MAVSDK
+ * src/mavsdk/core/mavlink_mission_transfer_server.cpp, SendOutgoingMission::process_mission_request_int
+ * and process_timeout). Such behaviour is learned from what the vehicle does, not from its
+ * autopilot type ([inOrder] is only a starting hint): answers that never come from past a gap
+ * while earlier ones do, an ERROR mid-transfer, or a vehicle that falls silent. From then on the
+ * vehicle is asked one item at a time, walking on from the first missing item through items
+ * already held (so that its own pointer moves on), and when it drops the transfer the download
+ * starts over from item 0 with a new MISSION_REQUEST_LIST, within [MAX_RESTARTS]. Ends by sending
  * MISSION_ACK ACCEPTED.
  */
 internal class MissionDownload(
     private val type: MissionType,
     private val timing: TransferTiming,
-    /** The vehicle serves downloads only in order and drops the transfer otherwise (PX4). */
-    private val inOrder: Boolean = false,
+    /** Start as for a vehicle that serves downloads only in order (PX4); otherwise it is learned. */
+    inOrder: Boolean = false,
     private val rtt: RoundTripEstimator = RoundTripEstimator(timing),
 ) {
     private enum class Phase { LISTING, RECEIVING, ENDED }
@@ -31,11 +41,16 @@ internal class MissionDownload(
     private var window = timing.window
     private var answeredSinceResize = 0
     private var timeoutsInARow = 0
+    private var inOrder = inOrder
     private var sequentialRetry = inOrder
     private var restarts = 0
     private var cursor = 0 // one-at-a-time mode: the next seq to walk through, had or not
-    private val strict = inOrder // restarted walks start at item 0
+    private var strict = inOrder // restarted walks start at item 0
     private var lowestMissing = 0
+    private var aheadSeen = false // an item arrived from past a gap: the vehicle serves out of order
+
+    /** True once the vehicle is known (or was assumed) to serve only in order. */
+    val learnedInOrder: Boolean get() = inOrder
 
     val progress: TransferProgress get() = TransferProgress(receivedCount, received.size)
 
@@ -69,8 +84,25 @@ internal class MissionDownload(
         // we never saw); only a new MISSION_REQUEST_LIST revives it. Stateless vehicles never do.
         // Counted in time as well as in timeouts: at 30 % loss, ten short timeouts in a row happen
         // every few hundred items, and a needless restart walks the whole list again.
-        if (inOrder && timeoutsInARow >= timing.retries / 2 && now - lastProgressAt >= timing.patience.inWholeNanoseconds / 4 && restarts < MAX_RESTARTS) {
+        if (timeoutsInARow >= timing.retries / 2 && now - lastProgressAt >= timing.patience.inWholeNanoseconds / 4 && restarts < MAX_RESTARTS) {
+            // Only a vehicle that dropped the transfer stays silent this long (an ERROR that ended
+            // it may have been lost): that is in-order behaviour (PX4, MAVSDK), and a new transfer
+            // on the vehicle's side starts at item 0. A stateless vehicle just answers again.
+            inOrder = true
+            strict = true
             return restart()
+        }
+        if (!sequentialRetry && inFlight >= 2 && receivedCount > 0 && !aheadSeen) {
+            // Answers stop at the first gap and nothing from past it ever came: the vehicle serves
+            // only its next item. Walk on one at a time from the gap (the vehicle accepts a request
+            // for an item it already sent: MAVSDK does, PX4 for the one just before its next).
+            inOrder = true
+            sequentialRetry = true
+            window = 1
+            requestedAt.fill(0L)
+            inFlight = 0
+            cursor = lowestMissing
+            return MissionStep(fill(now), rtt.timeoutNanos)
         }
         if (sequentialRetry) {
             if (cursor >= received.size) return MissionStep(timerNanos = rtt.timeoutNanos)
@@ -128,6 +160,7 @@ internal class MissionDownload(
         } else if (received[seq] != null) {
             return MissionStep.NOTHING // a duplicate
         }
+        if (seq > lowestMissing) aheadSeen = true
         if (requestedAt[seq] > 0L) rtt.sample(now - requestedAt[seq])
         if (requestedAt[seq] != 0L) inFlight--
         requestedAt[seq] = 0L
@@ -153,13 +186,16 @@ internal class MissionDownload(
     private fun onAck(result: MissionResult): MissionStep<List<MissionItem>> = when {
         result == MissionResult.ACCEPTED -> MissionStep.NOTHING
         result == MissionResult.DENIED -> end(TransferOutcome.Failed(MissionRejected(type, result, null, "download")))
-        inOrder && phase == Phase.RECEIVING -> onError(result)
+        // PX4 ends a download it was asked out of turn with ERROR: from now on, in order.
+        (inOrder || result == MissionResult.ERROR) && phase == Phase.RECEIVING -> onError(result)
         else -> MissionStep.NOTHING
     }
 
     private fun onError(result: MissionResult): MissionStep<List<MissionItem>> {
         if (phase == Phase.RECEIVING && restarts < MAX_RESTARTS) {
             // A vehicle that serves requests only in order (or lost track): start over, one item at a time.
+            inOrder = true
+            strict = true
             return restart()
         }
         return end(TransferOutcome.Failed(MissionRejected(type, result, received.indexOfFirst { it == null }.takeIf { it >= 0 }, "download")))
@@ -224,6 +260,6 @@ internal class MissionDownload(
          * loses track again and again (PX4 over such a link does); better a typed failure than an
          * endless walk.
          */
-        const val MAX_RESTARTS = 4
+        const val MAX_RESTARTS = 12
     }
 }

@@ -15,8 +15,11 @@ public sealed class MissionMessage {
     /** MISSION_REQUEST_INT, or the legacy MISSION_REQUEST when [legacy] (both are answered with MISSION_ITEM_INT). */
     public data class Request(val type: MissionType, val seq: Int, val legacy: Boolean = false) : MissionMessage()
 
-    /** MISSION_ITEM_INT. */
-    public data class Item(val item: MissionItem) : MissionMessage()
+    /**
+     * MISSION_ITEM_INT, or the legacy MISSION_ITEM (latitude and longitude as float degrees) when
+     * [legacy]; [item] holds wire integers either way (see [MissionWire]).
+     */
+    public data class Item(val item: MissionItem, val legacy: Boolean = false) : MissionMessage()
 
     /** MISSION_ACK. */
     public data class Ack(val type: MissionType, val result: MissionResult) : MissionMessage()

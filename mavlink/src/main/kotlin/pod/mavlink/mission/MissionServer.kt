@@ -10,7 +10,8 @@ public enum class MissionServerFlavor {
      * Requests items with the legacy MISSION_REQUEST, answers an unexpected item with a non-final
      * MISSION_ACK INVALID_SEQUENCE, re-requests after 1 s and gives up after 8 s with
      * OPERATION_CANCELLED, overwrites item 0 of a MISSION with home, answers a repeated last item
-     * after completion with ERROR, supports MISSION_WRITE_PARTIAL_LIST.
+     * after completion with ERROR, supports MISSION_WRITE_PARTIAL_LIST, and stores items in its
+     * own form ([ArduPilotMissionStorage]).
      */
     ARDUPILOT,
 
@@ -18,7 +19,7 @@ public enum class MissionServerFlavor {
      * Requests with MISSION_REQUEST_INT, ignores unexpected items, re-requests after 250 ms and
      * gives up silently after 5 s, keeps item 0, acknowledges a repeated last item again, ignores
      * partial writes, and serves downloads strictly in order (an out-of-turn request ends the
-     * download with ERROR).
+     * download with ERROR; 5 s without a request drop it silently).
      */
     PX4,
 }
@@ -39,6 +40,8 @@ public class MissionServer(
     public val maxItems: Int = 1000,
     /** Re-request period; null for the flavour's own (1 s ArduPilot, 250 ms PX4). */
     rerequest: Duration? = null,
+    /** ArduPlane rather than ArduCopter: decides what an ArduPilot-flavoured NAV_WAYPOINT keeps (see [ArduPilotMissionStorage]). */
+    public val fixedWing: Boolean = false,
 ) {
     private val rerequestNanos = (rerequest ?: if (flavor == MissionServerFlavor.ARDUPILOT) 1.seconds else 250.milliseconds).inWholeNanoseconds
     private val giveUpNanos = (if (flavor == MissionServerFlavor.ARDUPILOT) 8.seconds else 5.seconds).inWholeNanoseconds
@@ -46,10 +49,19 @@ public class MissionServer(
     private var upload: Upload? = null
     private var completed: Pair<MissionType, Int>? = null // type and last seq of the latest completed upload
     private var sending: Pair<MissionType, Int>? = null // PX4: the list being downloaded and the next seq it expects
+    private var sendingActivity = 0L // PX4: when the download last heard from the ground station
 
     private class Upload(val type: MissionType, val base: List<MissionItem>, val start: Int, val end: Int, var expected: Int, var lastActivity: Long) {
         val buffer = base.toMutableList()
     }
+
+    /**
+     * Until this time (same clock as the inputs) the ArduPilot flavour answers MISSION_COUNT with
+     * MAV_MISSION_NO_SPACE, as ArduPilot does right after boot: MissionItemProtocol::handle_mission_count
+     * refuses a count above `max_items()`, which is AP_Mission::num_commands_max(), 0 until the
+     * mission library has initialised its storage.
+     */
+    public var storageReadyAt: Long = Long.MIN_VALUE
 
     /** Home, written over item 0 of an uploaded MISSION by the ArduPilot flavour. */
     public var home: MissionItem? = null
@@ -78,10 +90,13 @@ public class MissionServer(
         is MissionMessage.RequestList -> if (busy(message.type)) {
             deny(message.type)
         } else {
-            if (flavor == MissionServerFlavor.PX4) sending = message.type to 0
+            if (flavor == MissionServerFlavor.PX4) {
+                sending = message.type to 0
+                sendingActivity = now
+            }
             listOf(MissionMessage.Count(message.type, list(message.type).size))
         }
-        is MissionMessage.Request -> onRequest(message)
+        is MissionMessage.Request -> onRequest(message, now)
         is MissionMessage.ClearAll -> if (busy(message.type)) deny(message.type) else {
             lists.remove(message.type)
             if (message.type == MissionType.MISSION) current = 0
@@ -93,8 +108,13 @@ public class MissionServer(
         }
         is MissionMessage.Ack -> {
             if (sending?.first == message.type) sending = null
+            // PX4 drops an upload on the ground station's MISSION_ACK OPERATION_CANCELLED
+            // (MavlinkMissionManager::handle_mission_ack, GETLIST state). ArduPilot's
+            // MissionItemProtocol has no MISSION_ACK handler: it goes on re-requesting until its
+            // own 8 s timeout (MissionItemProtocol::update, upload_timeout_ms), refusing downloads
+            // with DENIED meanwhile; only a new MISSION_COUNT from the same sender restarts it.
             val up = upload
-            if (up != null && message.type == up.type && message.result == MissionResult.OPERATION_CANCELLED) idle()
+            if (flavor == MissionServerFlavor.PX4 && up != null && message.type == up.type && message.result == MissionResult.OPERATION_CANCELLED) idle()
             emptyList()
         }
         is MissionMessage.Current -> emptyList()
@@ -119,7 +139,7 @@ public class MissionServer(
         }
         if (up != null && up.type != type) return deny(type)
         if (up != null && flavor == MissionServerFlavor.PX4) return listOf(MissionMessage.Ack(type, MissionResult.ERROR)) // "Busy"; goes on
-        if (count > maxItems) {
+        if (count > maxItems || (flavor == MissionServerFlavor.ARDUPILOT && count > 0 && now < storageReadyAt)) {
             idle()
             return listOf(MissionMessage.Ack(type, MissionResult.NO_SPACE))
         }
@@ -178,13 +198,18 @@ public class MissionServer(
         return listOf(MissionMessage.Ack(up.type, MissionResult.ACCEPTED))
     }
 
-    private fun onRequest(request: MissionMessage.Request): List<MissionMessage> {
+    private fun onRequest(request: MissionMessage.Request, now: Long): List<MissionMessage> {
         if (busy(request.type)) return deny(request.type)
         if (flavor == MissionServerFlavor.PX4) {
+            // A download left without requests for its protocol timeout is dropped, silently
+            // (MavlinkMissionManager::send, "check for timed-out operations": back to IDLE when
+            // _action_timeout, 5 s by default, passes without a message).
+            if (sending != null && now - sendingActivity >= giveUpNanos) sending = null
             // PX4 serves a download strictly in order: the expected item or a repeat of the last
             // one; anything else ends the transfer with ERROR, and requests while idle are ignored.
             val (type, next) = sending ?: return emptyList()
             if (type != request.type) return emptyList()
+            sendingActivity = now
             when (request.seq) {
                 next -> sending = type to next + 1
                 next - 1 -> Unit
@@ -197,14 +222,23 @@ public class MissionServer(
         val items = list(request.type)
         if (request.seq !in items.indices) return listOf(MissionMessage.Ack(request.type, MissionResult.INVALID_SEQUENCE))
         val item = items[request.seq]
-        return listOf(MissionMessage.Item(if (request.type == MissionType.MISSION) item.copy(current = request.seq == current) else item))
+        // Asked with the legacy MISSION_REQUEST, ArduPilot and PX4 answer with the legacy MISSION_ITEM
+        // (ArduPilot MissionItemProtocol::handle_mission_request; PX4 MavlinkMissionManager sends
+        // MISSION_ITEM unless the request was MISSION_REQUEST_INT).
+        val answer = if (request.type == MissionType.MISSION) item.copy(current = request.seq == current) else item
+        return listOf(MissionMessage.Item(answer, legacy = request.legacy))
     }
 
     private fun commit(up: Upload) {
         var items = up.buffer.toList()
+        if (flavor == MissionServerFlavor.ARDUPILOT) {
+            // ArduPilot keeps its own packed form of each item, not what was sent.
+            items = items.mapIndexed { i, item -> if (i in up.start..up.end) ArduPilotMissionStorage.stored(item, fixedWing) else item }
+        }
         val home = home
         if (flavor == MissionServerFlavor.ARDUPILOT && up.type == MissionType.MISSION && home != null && items.isNotEmpty()) {
-            items = listOf(home.copy(seq = 0, current = false, missionType = MissionType.MISSION)) + items.drop(1)
+            // AP_Mission::write_home_to_storage: a NAV_WAYPOINT at home, kept like any other item.
+            items = listOf(ArduPilotMissionStorage.stored(home.copy(seq = 0, missionType = MissionType.MISSION), fixedWing)) + items.drop(1)
         }
         lists[up.type] = items
         if (up.type == MissionType.MISSION && current >= items.size) current = 0
@@ -213,7 +247,10 @@ public class MissionServer(
     }
 
     /** The MAV_MISSION_RESULT a real autopilot would answer to [item], or null when it is acceptable. */
-    private fun problemWith(item: MissionItem): MissionResult? = when (item.missionType) {
+    private fun problemWith(item: MissionItem): MissionResult? =
+        (if (flavor == MissionServerFlavor.ARDUPILOT) ArduPilotMissionStorage.problem(item) else null) ?: commonProblemWith(item)
+
+    private fun commonProblemWith(item: MissionItem): MissionResult? = when (item.missionType) {
         MissionType.MISSION -> when {
             item.frame !in MissionItem.GLOBAL_FRAMES && item.frame != MissionItem.FRAME_MISSION && item.frame !in MissionItem.LOCAL_FRAMES -> MissionResult.UNSUPPORTED_FRAME
             else -> coordinateProblem(item)

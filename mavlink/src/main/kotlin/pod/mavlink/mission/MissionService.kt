@@ -2,6 +2,8 @@ package pod.mavlink.mission
 
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.NonCancellable
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.withTimeoutOrNull
 import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.channelFlow
 import kotlinx.coroutines.selects.onTimeout
@@ -14,7 +16,10 @@ import pod.core.vehicle.VehicleLost
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.exchange
 import pod.mavlink.MessageTargets
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.nanoseconds
+import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
 
 /**
@@ -31,6 +36,9 @@ public class MissionService internal constructor(
     public var timing: TransferTiming = TransferTiming(),
 ) {
     private val exclusive = Mutex()
+    @Volatile private var servesInOrder = false
+    private val appeared = TimeSource.Monotonic.markNow() // made with the vehicle, on its first heartbeat
+    private val cancelledUploads = java.util.concurrent.ConcurrentHashMap<MissionType, TimeSource.Monotonic.ValueTimeMark>()
     private var roundTrip: RoundTripEstimator? = null
     private var roundTripTiming: TransferTiming? = null
 
@@ -83,9 +91,16 @@ public class MissionService internal constructor(
      */
     private suspend fun write(type: MissionType, items: List<MissionItem>, partialFrom: Int?, onProgress: (TransferProgress) -> Unit) {
         exclusive.withLock {
-            val machine = MissionUpload(type, items, timing, roundTrip(), partialFrom)
-            val outcome = drive(type, cancellable = true, { machine.start() }, machine::onMessage, machine::onTimeout) {
-                onProgress(machine.progress)
+            val outcome = try {
+                untilServiceUp(type) {
+                    val machine = MissionUpload(type, items, timing, roundTrip(), partialFrom)
+                    drive(type, cancellable = true, { machine.start() }, machine::onMessage, machine::onTimeout) {
+                        onProgress(machine.progress)
+                    }
+                }
+            } catch (e: CancellationException) {
+                cancelledUploads[type] = TimeSource.Monotonic.markNow()
+                throw e
             }
             if (outcome is TransferOutcome.AckMissing) {
                 val onBoard = downloadLocked(type) {}
@@ -96,13 +111,49 @@ public class MissionService internal constructor(
         }
     }
 
+    /**
+     * Runs [attempt] again while the vehicle refuses it with MAV_MISSION_NO_SPACE within
+     * [TransferTiming.serviceStartup] of its appearance: a vehicle just booted (ArduPilot) has not
+     * started its mission storage yet. Pauses [SERVICE_RETRY_PAUSE] between attempts; after the
+     * window the refusal stands.
+     */
+    private suspend fun <T> untilServiceUp(type: MissionType, attempt: suspend () -> T): T {
+        while (true) {
+            try {
+                return attempt()
+            } catch (e: MissionRejected) {
+                val left = timing.serviceStartup - appeared.elapsedNow()
+                if (e.result != MissionResult.NO_SPACE || left <= Duration.ZERO) throw e
+                delay(minOf(SERVICE_RETRY_PAUSE, left))
+            }
+        }
+    }
+
     /** [upload] as a flow of progress: collecting it runs the upload; it completes when the vehicle holds the list. */
     public fun uploading(items: List<MissionItem>, type: MissionType = MissionType.MISSION): Flow<TransferProgress> =
         channelFlow { upload(items, type) { trySend(it) } }
 
     /** Downloads the vehicle's [type] list. */
     public suspend fun download(type: MissionType = MissionType.MISSION, onProgress: (TransferProgress) -> Unit = {}): List<MissionItem> =
-        exclusive.withLock { downloadLocked(type, onProgress) }
+        exclusive.withLock { afterOwnCancel(type) { downloadLocked(type, onProgress) } }
+
+    /**
+     * Runs [attempt] again while the vehicle answers DENIED within [ABANDONED_UPLOAD_HOLD] of an
+     * upload of [type] that this service cancelled: ArduPilot ignores the cancelling MISSION_ACK
+     * and holds the abandoned upload until its own timeout (8 s), refusing downloads meanwhile.
+     */
+    private suspend fun <T> afterOwnCancel(type: MissionType, attempt: suspend () -> T): T {
+        while (true) {
+            try {
+                return attempt()
+            } catch (e: MissionRejected) {
+                val cancelled = cancelledUploads[type]
+                val left = if (cancelled == null) Duration.ZERO else ABANDONED_UPLOAD_HOLD - cancelled.elapsedNow()
+                if (e.result != MissionResult.DENIED || left <= Duration.ZERO) throw e
+                delay(minOf(SERVICE_RETRY_PAUSE, left))
+            }
+        }
+    }
 
     /** [download] as a flow of progress; the list itself comes from [download]. */
     public fun downloading(type: MissionType = MissionType.MISSION): Flow<TransferProgress> =
@@ -126,17 +177,24 @@ public class MissionService internal constructor(
     }
 
     private suspend fun downloadLocked(type: MissionType, onProgress: (TransferProgress) -> Unit): List<MissionItem> {
-        val machine = MissionDownload(type, timing, inOrder = vehicle.identity.value.autopilot == Autopilot.PX4, roundTrip())
-        val outcome = drive(type, cancellable = true, { machine.start() }, machine::onMessage, machine::onTimeout) { onProgress(machine.progress) }
+        // PX4 is known to serve in order; any other vehicle shows it (MAVSDK's vehicle side does),
+        // and what one download learned, the next starts from.
+        val machine = MissionDownload(type, timing, inOrder = servesInOrder || vehicle.identity.value.autopilot == Autopilot.PX4, roundTrip())
+        val outcome = try {
+            drive(type, cancellable = true, { machine.start() }, machine::onMessage, machine::onTimeout) { onProgress(machine.progress) }
+        } finally {
+            if (machine.learnedInOrder) servesInOrder = true
+        }
         @Suppress("UNCHECKED_CAST")
         return (outcome as TransferOutcome.Done<List<MissionItem>>).value
     }
 
     private fun sameList(type: MissionType, onBoard: List<MissionItem>, sent: List<MissionItem>, homeFirst: Boolean = true): Boolean {
-        if (onBoard.size != sent.size) return false
-        // ArduPilot keeps home in item 0 of a mission, whatever was sent there.
-        val skip = if (homeFirst && type == MissionType.MISSION && vehicle.identity.value.autopilot == Autopilot.ARDUPILOT) 1 else 0
-        return onBoard.drop(skip).map { it.copy(current = false) } == sent.drop(skip).map { it.copy(current = false) }
+        val identity = vehicle.identity.value
+        return MissionStorage.holds(
+            type, onBoard, sent, ardupilot = identity.autopilot == Autopilot.ARDUPILOT,
+            fixedWing = identity.type == pod.core.vehicle.VehicleType.FIXED_WING, homeFirst = homeFirst,
+        )
     }
 
     /**
@@ -191,12 +249,28 @@ public class MissionService internal constructor(
                 error("unreachable")
             } catch (e: CancellationException) {
                 if (cancellable) {
+                    // Tell the vehicle, or it refuses the next transfer (DENIED) until its own timeout:
+                    // ArduPilot's MissionItemProtocol and PX4's MavlinkMissionManager drop the
+                    // transfer on MISSION_ACK. Bounded, so a stuck socket cannot hold up the cancel.
                     withContext(NonCancellable) {
-                        vehicle.send(MissionWire.encode(MissionMessage.Ack(type, MissionResult.OPERATION_CANCELLED), identity.systemId, identity.componentId))
+                        withTimeoutOrNull(CANCEL_SEND_LIMIT) {
+                            vehicle.send(MissionWire.encode(MissionMessage.Ack(type, MissionResult.OPERATION_CANCELLED), identity.systemId, identity.componentId))
+                        }
                     }
                 }
                 throw e
             }
         }
+    }
+
+    private companion object {
+        /** Pause between uploads refused while the vehicle's mission service starts. */
+        val SERVICE_RETRY_PAUSE = 500.milliseconds
+
+        /** How long after cancelling an upload a DENIED download is taken for the vehicle still holding it (ArduPilot: 8 s). */
+        val ABANDONED_UPLOAD_HOLD = 10.seconds
+
+        /** Longest wait to hand the cancelling MISSION_ACK to the link. */
+        val CANCEL_SEND_LIMIT = 500.milliseconds
     }
 }

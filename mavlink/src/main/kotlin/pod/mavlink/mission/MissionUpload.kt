@@ -43,6 +43,7 @@ internal class MissionUpload(
     private var pendingErrorAt = 0L
 
     private var accepted = false
+    private var restarts = 0
     private var highestSent = -1
 
     /** Items the vehicle has confirmed: those before the newest it asked for, or all once it accepted. */
@@ -56,6 +57,7 @@ internal class MissionUpload(
 
     fun onMessage(message: MissionMessage, now: Long): MissionStep<Unit> {
         if (phase == Phase.ENDED) return MissionStep.NOTHING
+        if ((message is MissionMessage.Request && message.type == type) || (message is MissionMessage.Ack && message.type == type)) lastHeardAt = now
         return when (message) {
             is MissionMessage.Request -> if (message.type == type) onRequest(message.seq - first, now) else MissionStep.NOTHING
             is MissionMessage.Ack -> if (message.type == type) onAck(message.result, now) else MissionStep.NOTHING
@@ -64,6 +66,7 @@ internal class MissionUpload(
     }
 
     private var lastProgressAt = Long.MIN_VALUE
+    private var lastHeardAt = Long.MIN_VALUE // anything from the vehicle about this list
 
     fun onTimeout(now: Long): MissionStep<Unit> {
         if (phase == Phase.ENDED) return MissionStep.NOTHING
@@ -86,6 +89,26 @@ internal class MissionUpload(
                     )
                 },
             )
+        }
+        if (phase == Phase.SENDING && timeoutsInARow >= timing.retries / 2 && now - lastProgressAt >= timing.patience.inWholeNanoseconds / 4 && restarts < MAX_RESTARTS) {
+            // Long silence mid-upload: the vehicle has probably dropped the transfer (MAVSDK's
+            // vehicle side does, silently, after a few timeouts: ReceiveIncomingMission). Start over
+            // with the count; ArduPilot restarts for the same sender, PX4 goes on with its requests.
+            restarts++
+            timeoutsInARow = 0
+            lastProgressAt = now
+            phase = Phase.COUNTING
+            newest = -1
+            staleSeq = -1
+            pendingError = null
+            firstSentAt.fill(RETRANSMITTED)
+            return MissionStep(listOf(opening()), rtt.timeoutNanos)
+        }
+        if (phase == Phase.AWAITING_ACK && timeoutsInARow >= 6 && now - maxOf(lastProgressAt, lastHeardAt) >= QUIET_AFTER_LAST_NANOS) {
+            // The last item went out again and again and nothing came back: ArduPilot would answer
+            // ERROR and PX4 ACCEPTED to a repeat, but MAVSDK's vehicle side has finished and answers
+            // nothing (its handlers are gone once it sent the ACK we lost). A download tells.
+            return end(TransferOutcome.AckMissing)
         }
         rtt.backOff()
         val resend = when (phase) {
@@ -197,6 +220,12 @@ internal class MissionUpload(
 
         /** Most items one late request makes us send: enough to catch up with a vehicle ahead, no flood. */
         const val MAX_PROBE = 8
+
+        /** Silence after the last item before its lost ACK is looked for with a download. */
+        const val QUIET_AFTER_LAST_NANOS = 2_000_000_000L
+
+        /** Start-overs after the vehicle fell silent mid-upload. */
+        const val MAX_RESTARTS = 6
 
         /** Silence after an ambiguous error answer before it counts: past ArduPilot's 1 s re-request. */
         const val ERROR_SILENCE_NANOS = 1_500_000_000L

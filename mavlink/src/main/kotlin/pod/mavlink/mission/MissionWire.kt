@@ -8,6 +8,7 @@ import io.dronefleet.mavlink.common.MissionAck
 import io.dronefleet.mavlink.common.MissionClearAll
 import io.dronefleet.mavlink.common.MissionCount
 import io.dronefleet.mavlink.common.MissionCurrent
+import io.dronefleet.mavlink.common.MissionItem as LegacyMissionItem
 import io.dronefleet.mavlink.common.MissionItemInt
 import io.dronefleet.mavlink.common.MissionRequest
 import io.dronefleet.mavlink.common.MissionRequestInt
@@ -33,7 +34,7 @@ public object MissionWire {
             MissionRequestInt.builder().targetSystem(targetSystem).targetComponent(targetComponent)
                 .seq(message.seq).missionType(type(message.type)).build()
         }
-        is MissionMessage.Item -> message.item.let { item ->
+        is MissionMessage.Item -> if (message.legacy) legacyItem(message.item, targetSystem, targetComponent) else message.item.let { item ->
             MissionItemInt.builder().targetSystem(targetSystem).targetComponent(targetComponent)
                 .seq(item.seq).frame(EnumValue.create<MavFrame>(item.frame)).command(EnumValue.create<MavCmd>(item.command))
                 .current(if (item.current) 1 else 0).autocontinue(if (item.autocontinue) 1 else 0)
@@ -71,6 +72,19 @@ public object MissionWire {
                 ),
             )
         }
+        is LegacyMissionItem -> type(message.missionType())?.let { t ->
+            MissionMessage.Item(
+                MissionItem(
+                    seq = message.seq(), frame = message.frame().value(), command = message.command().value(),
+                    current = message.current() != 0, autocontinue = message.autocontinue() != 0,
+                    param1 = message.param1(), param2 = message.param2(), param3 = message.param3(), param4 = message.param4(),
+                    x = toWire(message.x(), message.frame().value(), message.command().value()),
+                    y = toWire(message.y(), message.frame().value(), message.command().value()),
+                    z = message.z(), missionType = t,
+                ),
+                legacy = true,
+            )
+        }
         is MissionAck -> {
             val t = type(message.missionType())
             val r = MissionResult.of(message.type().value())
@@ -84,6 +98,33 @@ public object MissionWire {
         is MissionCurrent -> MissionMessage.Current(message.seq(), message.total())
         else -> null
     }
+
+    private fun legacyItem(item: MissionItem, targetSystem: Int, targetComponent: Int): LegacyMissionItem =
+        LegacyMissionItem.builder().targetSystem(targetSystem).targetComponent(targetComponent)
+            .seq(item.seq).frame(EnumValue.create<MavFrame>(item.frame)).command(EnumValue.create<MavCmd>(item.command))
+            .current(if (item.current) 1 else 0).autocontinue(if (item.autocontinue) 1 else 0)
+            .param1(item.param1).param2(item.param2).param3(item.param3).param4(item.param4)
+            .x(fromWire(item.x, item.frame, item.command)).y(fromWire(item.y, item.frame, item.command)).z(item.z)
+            .missionType(type(item.missionType)).build()
+
+    /**
+     * MISSION_ITEM carries x and y as floats: degrees in global frames, metres in local frames. As
+     * ArduPilot does (AP_Mission::convert_MISSION_ITEM_to_MISSION_ITEM_INT), every command but the
+     * two camera ones whose x and y are plain integers takes them as degrees × 10⁷; local frames
+     * take metres × 10⁴ (MAVLink's MISSION_ITEM_INT definition).
+     */
+    private fun scale(frame: Int, command: Int): Float = when {
+        command == DO_DIGICAM_CONFIGURE || command == DO_DIGICAM_CONTROL -> 1f
+        frame in MissionItem.LOCAL_FRAMES -> 1e4f
+        else -> 1e7f
+    }
+
+    private fun toWire(value: Float, frame: Int, command: Int): Int = (value * scale(frame, command)).toInt()
+
+    private fun fromWire(value: Int, frame: Int, command: Int): Float = value / scale(frame, command)
+
+    private const val DO_DIGICAM_CONFIGURE = 202
+    private const val DO_DIGICAM_CONTROL = 203
 
     private fun type(type: MissionType): EnumValue<MavMissionType> = EnumValue.create(type.mavValue)
 

@@ -39,6 +39,12 @@ public data class TransferTiming(
     public val patience: Duration = 10.seconds,
     /** Download requests kept in flight at most. */
     public val window: Int = 16,
+    /**
+     * How long after a vehicle appeared an upload refused with MAV_MISSION_NO_SPACE is tried
+     * again: ArduPilot refuses every upload so while its mission storage is still starting, for
+     * the first seconds after boot. Later, NO_SPACE means the list does not fit and fails at once.
+     */
+    public val serviceStartup: Duration = 30.seconds,
 ) {
     init {
         require(minTimeout.isPositive()) { "minTimeout must be > 0, was $minTimeout" }
@@ -47,6 +53,7 @@ public data class TransferTiming(
         require(retries >= 1) { "retries must be ≥ 1, was $retries" }
         require(window in 1..256) { "window must be in 1..256, was $window" }
         require(!patience.isNegative()) { "patience must be ≥ 0, was $patience" }
+        require(!serviceStartup.isNegative()) { "serviceStartup must be ≥ 0, was $serviceStartup" }
     }
 }
 

@@ -23,6 +23,8 @@ internal class VirtualLink(
     private val up: Faults,
     private val down: Faults,
     seed: Long,
+    /** Messages lost on purpose, whatever the faults say ([toVehicle]: on the way up). */
+    private val lose: (message: MissionMessage, toVehicle: Boolean) -> Boolean = { _, _ -> false },
 ) {
     private val random = Random(seed)
     private var now = 0L // nanoseconds
@@ -115,6 +117,7 @@ internal class VirtualLink(
 
     private fun send(message: MissionMessage, toVehicle: Boolean) {
         messagesSent++
+        if (lose(message, toVehicle)) return
         val faults = if (toVehicle) up else down
         if (random.nextDouble() < faults.drop) return
         val copies = if (random.nextDouble() < faults.duplicate) 2 else 1

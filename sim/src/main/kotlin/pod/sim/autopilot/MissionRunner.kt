@@ -259,6 +259,9 @@ internal class MissionRunner(private val ap: SimAutopilot) {
     private fun radiusOf(it: MissionItem): Pair<Double, Boolean> {
         val r = it.param3.toDouble()
         return when {
+            // ArduPilot keeps no radius for NAV_LOITER_TIME, only the direction in param3's sign
+            // (AP_Mission::mavlink_int_to_mission_cmd): the loiter radius parameter applies.
+            it.command == NAV_LOITER_TIME && !ap.isPx4 -> ap.loiterRadius().let { (radius, cw) -> radius to (if (r != 0.0) r > 0 else cw) }
             r != 0.0 -> abs(r) to (r > 0)
             ap.multirotor -> 0.0 to true
             else -> ap.loiterRadius()

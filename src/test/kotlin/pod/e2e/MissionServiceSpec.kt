@@ -1,0 +1,86 @@
+package pod.e2e
+
+import io.kotest.assertions.throwables.shouldThrow
+import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.comparables.shouldBeLessThan
+import io.kotest.matchers.shouldBe
+import kotlinx.coroutines.CompletableDeferred
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.withTimeout
+import pod.core.vehicle.Autopilot
+import pod.mavlink.GroundStation
+import pod.mavlink.MavlinkVehicle
+import pod.mavlink.mission.MissionRejected
+import pod.mavlink.mission.MissionResult
+import pod.mavlink.mission.MissionType
+import pod.mavlink.mission.TransferTiming
+import pod.sim.SimVehicle
+import pod.sim.SimVehicleConfig
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.seconds
+import kotlin.time.TimeSource
+
+/** Runs [block] with a ground station and one simulated vehicle configured by [config] (its gcs is filled in). */
+private suspend fun withSim(config: SimVehicleConfig, block: suspend (MavlinkVehicle, SimVehicle) -> Unit) = coroutineScope {
+    val gcs = GroundStation.open("udpin://127.0.0.1:0", this)
+    val sim = SimVehicle(config.copy(gcs = "udpout://127.0.0.1:${gcs.link.localPort}"))
+    try {
+        sim.start(this)
+        val vehicle = withTimeout(10.seconds) { gcs.vehicles.first { config.systemId in it } }.getValue(config.systemId)
+        withTimeout(40.seconds) { block(vehicle, sim) }
+    } finally {
+        sim.stop()
+        gcs.close()
+    }
+}
+
+/** Starts uploading [count] items and cancels the upload once the vehicle has taken about a tenth of them. */
+private suspend fun cancelUploadMidway(vehicle: MavlinkVehicle, count: Int) = coroutineScope {
+    val midway = CompletableDeferred<Unit>()
+    val upload = launch { vehicle.mission.upload(waypoints(count)) { if (it.done >= count / 10) midway.complete(Unit) } }
+    withTimeout(20.seconds) { midway.await() }
+    upload.cancel()
+    upload.join()
+}
+
+class MissionServiceSpec : StringSpec({
+
+    "a cancelled upload tells a PX4 vehicle, whose next download then succeeds at once" {
+        withSim(SimVehicleConfig(systemId = 31, autopilot = Autopilot.PX4)) { vehicle, sim ->
+            val before = sim.missionServer.list(MissionType.MISSION)
+            cancelUploadMidway(vehicle, 500)
+            val mark = TimeSource.Monotonic.markNow()
+            vehicle.mission.download() shouldBe before
+            // PX4 keeps a transfer without a cancel for 5 s and answers DENIED meanwhile.
+            mark.elapsedNow() shouldBeLessThan 2.seconds
+        }
+    }
+
+    "a download after a cancelled upload to an ArduPilot vehicle waits until the vehicle lets go of the upload" {
+        // ArduPilot ignores the cancelling MISSION_ACK and answers downloads DENIED until its own
+        // 8 s upload timeout: Pod waits for it instead of failing.
+        withSim(SimVehicleConfig(systemId = 32, autopilot = Autopilot.ARDUPILOT)) { vehicle, sim ->
+            cancelUploadMidway(vehicle, 500)
+            vehicle.mission.download() shouldBe sim.missionServer.list(MissionType.MISSION)
+        }
+    }
+
+    "an upload to an ArduPilot vehicle just booted waits for its mission storage instead of failing with NO_SPACE" {
+        withSim(SimVehicleConfig(systemId = 33, autopilot = Autopilot.ARDUPILOT, missionStorageReadyAfter = 3.seconds)) { vehicle, sim ->
+            val items = waypoints(10)
+            vehicle.mission.upload(items)
+            sim.missionServer.list(MissionType.MISSION).drop(1) shouldBe items.drop(1).map { it.copy(current = false) }
+        }
+    }
+
+    "NO_SPACE from a vehicle that is not starting up fails at once" {
+        withSim(SimVehicleConfig(systemId = 34, autopilot = Autopilot.ARDUPILOT, missionStorageReadyAfter = 30.seconds)) { vehicle, _ ->
+            vehicle.mission.timing = TransferTiming(serviceStartup = Duration.ZERO)
+            val mark = TimeSource.Monotonic.markNow()
+            shouldThrow<MissionRejected> { vehicle.mission.upload(waypoints(10)) }.result shouldBe MissionResult.NO_SPACE
+            mark.elapsedNow() shouldBeLessThan 2.seconds
+        }
+    }
+})
