@@ -14,13 +14,18 @@ import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.runInterruptible
 import kotlinx.coroutines.withTimeout
+import pod.core.vehicle.Autopilot
+import pod.mavlink.mission.WplFile
 import pod.sim.SimVehicle
 import pod.sim.SimVehicleConfig
+import pod.sim.fault.LinkFaults
+import pod.sim.fault.LossyRelay
 import java.io.File
 import java.nio.file.Files
 import kotlin.math.abs
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
+import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.minutes
 
 /**
@@ -114,6 +119,37 @@ class InterruptSpec : StringSpec({
                 sim.state.value.relativeAltitude.meters shouldBeLessThan 50.0
             } finally {
                 sim.stop()
+            }
+        }
+    }
+
+    "Ctrl-C during `pod mission upload` cancels the transfer, leaves the vehicle's flight alone, says so and exits 130" {
+        coroutineScope {
+            val port = freePort()
+            // 20 ms each way: 500 items take over 20 s, long enough to be stopped half-way.
+            val slow = LinkFaults(delay = 20.milliseconds)
+            val relay = LossyRelay("udpin://127.0.0.1:0", "udpout://127.0.0.1:$port", slow, slow, seed = 1)
+            val file = Files.createTempFile("pod-interrupt", ".waypoints")
+            try {
+                relay.start(this)
+                val sim = SimVehicle(SimVehicleConfig(systemId = 74, autopilot = Autopilot.PX4, gcs = "udpout://127.0.0.1:${relay.portA}"))
+                try {
+                    sim.start(this)
+                    WplFile.write(file, waypoints(500))
+                    val pod = pod("mission", "upload", file.toString(), "--connect", "udpin:127.0.0.1:$port", "--sysid", "74")
+                    pod.awaitOut(60.seconds) { "uploading" in it && "/500" in it && "500/500" !in it }
+                    pod.signal("INT")
+                    pod.exitCode(30.seconds) shouldBe 130
+                    pod.out.value shouldExist { "interrupted by SIGINT: vehicle 74 transfer cancelled" in it }
+                    pod.out.value.none { "500/500" in it } shouldBe true
+                    sim.state.value.modeName shouldBe "AUTO.LOITER"
+                    sim.state.value.armed shouldBe false
+                } finally {
+                    sim.stop()
+                }
+            } finally {
+                relay.close()
+                Files.deleteIfExists(file)
             }
         }
     }
