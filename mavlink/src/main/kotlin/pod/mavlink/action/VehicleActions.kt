@@ -177,7 +177,16 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
      * where it is (ArduPlane LOITER). See [FlightModes.forRole] for the autopilots' sources.
      */
     public suspend fun hold() {
-        setMode(role(ModeRole.HOLD))
+        val hold = role(ModeRole.HOLD)
+        val here = vehicle.telemetry.position.value?.location
+        // PX4's Hold is also where a goto flies (DO_REPOSITION in AUTO.LOITER), and choosing the
+        // mode a vehicle is already in changes nothing: a reposition onto where it is stops it
+        // there (PX4 src/modules/navigator/loiter.cpp Loiter::on_active -> reposition()).
+        if (hold == role(ModeRole.GUIDED) && vehicle.telemetry.mode.value?.name == hold && vehicle.telemetry.armed.value && here != null) {
+            goto(here)
+            return
+        }
+        setMode(hold)
     }
 
     /**
