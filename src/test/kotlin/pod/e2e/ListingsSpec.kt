@@ -34,6 +34,7 @@ import pod.samples.listing3
 import pod.samples.listing4
 import pod.samples.simulate
 import pod.sim.SimFlavor
+import kotlin.math.abs
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.minutes
 import kotlin.time.Duration.Companion.seconds
@@ -128,9 +129,15 @@ class ListingsSpec : StringSpec({
                 }
                 withTimeout(2.seconds) {
                     program.cancelAndJoin()
-                    mav.forEach { v -> v.telemetry.mode.first { it?.name == "LOITER" } }
+                    mav.forEach { v -> v.telemetry.mode.first { it?.name == "BRAKE" } }
                 }
                 mav.forEach { it.telemetry.landedState.value shouldBe LandedState.IN_AIR }
+                // Settled in the air: ArduCopter's LOITER with no stick input would sink at 2.5 m/s to the ground.
+                withTimeout(10.seconds) {
+                    mav.forEach { v ->
+                        v.telemetry.position.first { p -> p != null && abs(p.velocityDown.metersPerSecond) < 0.2 && p.relativeAltitude.meters > 10.0 }
+                    }
+                }
             }
         }
     }

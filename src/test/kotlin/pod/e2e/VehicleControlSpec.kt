@@ -16,6 +16,8 @@ import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.flow.mapNotNull
 import kotlinx.coroutines.withTimeout
+import io.kotest.matchers.doubles.shouldBeLessThan
+import kotlin.math.abs
 import pod.core.units.m
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleLost
@@ -29,6 +31,8 @@ import pod.mavlink.command.CommandResult
 import pod.mavlink.command.CommandTimeout
 import pod.mavlink.command.CommandTiming
 import pod.mavlink.command.VehicleCommand
+import pod.mavlink.telemetry.FlightModes
+import pod.mavlink.telemetry.ModeRole
 import pod.sim.SimVehicle
 import pod.sim.SimVehicleConfig
 import pod.sim.fault.LinkFaults
@@ -56,6 +60,27 @@ class VehicleControlSpec : StringSpec({
     }
 
     for (autopilot in listOf(Autopilot.ARDUPILOT, Autopilot.PX4)) {
+        "hold stops a ${autopilot.name} copter on its way to a point and keeps it there, at its height" {
+            Flights.flying(SimVehicleConfig(systemId = 43, autopilot = autopilot, timeScale = 5.0)) { v, sim ->
+                val home = v.telemetry.position.value!!.location
+                Flights.keepArmedOnGround(v)
+                v.action.arm()
+                v.action.takeoff(15.m)
+                val target = home.offset(north = 300.m, east = 0.m, up = 15.m)
+                v.action.goto(target)
+                withTimeout(60.seconds) { sim.state.first { it.groundSpeed > 3.0 } }
+                v.action.hold()
+                val stopped = sim.state.value.location
+                // PX4's Hold is where its goto flies: choosing it again would let the copter fly on.
+                // ArduCopter's LOITER would sink to the ground with nobody on the sticks.
+                val still = withTimeout(30.seconds) { sim.state.first { it.groundSpeed < 0.1 && abs(it.climbRate) < 0.1 } }
+                still.location.distanceTo(stopped).meters shouldBeLessThan 30.0
+                abs(still.relativeAltitude.meters - 15.0) shouldBeLessThan 1.0
+                still.armed shouldBe true
+                v.telemetry.mode.value!!.name shouldBe FlightModes.forRole(autopilot, VehicleType.QUADROTOR, ModeRole.HOLD)
+            }
+        }
+
         "through a relay losing 30 % each way, a ${autopilot.name} copter still arms, takes off, goes to a point and lands" {
             coroutineScope {
                 val station = GroundStationConfig(lostAfter = 10.seconds)

@@ -21,13 +21,27 @@ import kotlin.time.Duration.Companion.seconds
 
 /**
  * A one-step vehicle action: does it, waits for the vehicle's confirmation, and ends with a
- * `done` line naming the action and the vehicle's mode and armed state.
+ * `done` line naming the action and the vehicle's mode and armed state. Interrupted, it leaves an
+ * armed vehicle holding where it is ([MavlinkVehicle.action]`.hold()`: a mode that keeps its
+ * height with nobody on the sticks); actions that are themselves the safe end of a flight (land,
+ * return, disarm, pause) leave the vehicle doing them.
  */
 internal abstract class ActionCommand(out: Output, name: String, private val summary: String) : VehicleCommandBase(out, name) {
     override fun help(context: Context): String = summary
 
     /** Performs the action; returns what to print for people. */
     protected abstract suspend fun perform(vehicle: MavlinkVehicle): String
+
+    /** Whether an interrupted action leaves the vehicle as it is instead of holding. */
+    protected open val safeAsItIs: Boolean = false
+
+    override suspend fun afterInterrupt(vehicle: MavlinkVehicle): String {
+        val t = vehicle.telemetry
+        if (safeAsItIs) return "left ${t.mode.value?.name ?: "as it was"}"
+        if (!t.armed.value) return "is disarmed"
+        vehicle.action.hold()
+        return "holding in ${t.mode.value?.name}"
+    }
 
     override suspend fun act(vehicle: MavlinkVehicle) {
         val text = perform(vehicle)
@@ -61,6 +75,7 @@ internal class ArmCommand(out: Output) : ActionCommand(out, "arm", "Arm the moto
 
 internal class DisarmCommand(out: Output) : ActionCommand(out, "disarm", "Disarm the motors and wait until the vehicle reports it disarmed.") {
     private val force by option("--force", help = "even in flight (a multicopter falls)").flag()
+    override val safeAsItIs: Boolean = true
     override suspend fun perform(vehicle: MavlinkVehicle) = vehicle.action.disarm(force).let { "disarmed" }
 }
 
@@ -75,6 +90,7 @@ internal class TakeoffCommand(out: Output) : ActionCommand(out, "takeoff", "Take
 }
 
 internal class LandCommand(out: Output) : ActionCommand(out, "land", "Land (a plane through its mission's landing sequence).") {
+    override val safeAsItIs: Boolean = true
     private val untilLanded by option("--until-landed", help = "wait for touchdown and disarm").flag()
     override suspend fun perform(vehicle: MavlinkVehicle): String {
         vehicle.action.land()
@@ -85,6 +101,7 @@ internal class LandCommand(out: Output) : ActionCommand(out, "land", "Land (a pl
 }
 
 internal class RtlCommand(out: Output) : ActionCommand(out, "rtl", "Return to launch.") {
+    override val safeAsItIs: Boolean = true
     private val untilLanded by option("--until-landed", help = "wait for touchdown and disarm (multicopters)").flag()
     override suspend fun perform(vehicle: MavlinkVehicle): String {
         vehicle.action.returnToLaunch()
@@ -123,6 +140,7 @@ internal class GotoCommand(out: Output) : ActionCommand(out, "goto", "Fly to LAT
 }
 
 internal class PauseCommand(out: Output) : ActionCommand(out, "pause", "Pause the mission, holding position and altitude.") {
+    override val safeAsItIs: Boolean = true
     override suspend fun perform(vehicle: MavlinkVehicle) = vehicle.action.pauseMission().let { "paused" }
 }
 

@@ -15,6 +15,8 @@ import kotlinx.coroutines.launch
 import kotlinx.coroutines.runBlocking
 import pod.core.engine.EngineEvent
 import pod.core.platform.MissionEvent
+import pod.launch.Interruption
+import pod.launch.Interrupted
 import pod.samples.listing4
 import pod.samples.simulate
 import pod.sim.SimFlavor
@@ -55,7 +57,7 @@ internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo"
                 val shown = launch { view.show(sim.station) }
                 view.note("$count simulated drones at ${timeScale}x; keeping 2 on survey for $length of vehicle time")
                 try {
-                    listing4(duration = length)
+                    Interruption.cancellable { listing4(duration = length) }
                 } finally {
                     shown.cancel()
                     view.render(sim.station)
@@ -63,6 +65,10 @@ internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo"
             }
         } catch (e: CliktError) {
             throw e
+        } catch (e: Interrupted) {
+            // The drones live in this process and stop with it; the cancelled program made them safe first.
+            out.line(if (json) jsonLine("event" to "interrupted", "signal" to e.signal, "map" to map.toString()) else "interrupted by ${e.signal}: demo stopped; map so far: $map")
+            throw CliktError("pod: stopped by ${e.signal}", statusCode = Interruption.EXIT_CODE)
         } catch (e: Exception) {
             failed = e
         }

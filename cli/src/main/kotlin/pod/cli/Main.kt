@@ -5,6 +5,7 @@ import com.github.ajalt.clikt.core.CliktError
 import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.core.main
 import com.github.ajalt.clikt.core.subcommands
+import pod.launch.Interruption
 import pod.mavlink.link.LinkException
 
 /** Where a command writes its lines; tests pass their own to read what a person would see. */
@@ -30,4 +31,7 @@ internal inline fun <T> reportingLinkErrors(block: () -> T): T = try {
     throw CliktError("error: ${e.message}", statusCode = 2)
 }
 
-fun main(args: Array<String>) = Pod().main(args)
+fun main(args: Array<String>) {
+    Interruption.install({ System.err.println(it) })
+    Pod().main(args)
+}

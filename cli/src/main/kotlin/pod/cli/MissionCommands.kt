@@ -28,6 +28,9 @@ internal class MissionGroup(out: Output) : CliktCommand(name = "mission") {
 
 /** Options every `pod mission` command shares, on top of picking the vehicle. */
 internal abstract class MissionAction(out: Output, name: String) : VehicleCommandBase(out, name) {
+    /** Interrupted, the transfer is cancelled (the vehicle is told so); the vehicle flies on as it was. */
+    override suspend fun afterInterrupt(vehicle: MavlinkVehicle): String = "transfer cancelled; the vehicle's flight is unchanged"
+
     protected val type by option("--type", help = "which list").choice("mission" to MissionType.MISSION, "fence" to MissionType.FENCE, "rally" to MissionType.RALLY)
         .default(MissionType.MISSION)
 

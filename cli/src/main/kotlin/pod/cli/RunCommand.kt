@@ -14,12 +14,16 @@ import pod.cli.script.ScriptClasspath
 import pod.cli.script.ScriptHost
 import pod.cli.script.ScriptOutcome
 import pod.launch.FleetChoice
+import pod.launch.Interruption
+import pod.launch.interruptionIn
 import pod.mavlink.link.LinkAddress
 import java.io.File
 
 /**
  * `pod run SCRIPT.main.kts`: compiles and runs a Kotlin script in this JVM with Pod on its
  * classpath, telling it which fleet to fly through the [FleetChoice] system properties.
+ * Stopped by Ctrl-C or SIGTERM, the script's `pod { }` program is cancelled and its vehicles made
+ * safe ([Interruption]); the command then exits with 130.
  */
 internal class RunCommand : CliktCommand(name = "run") {
     private val script by argument("SCRIPT", help = "a .main.kts script")
@@ -36,19 +40,28 @@ internal class RunCommand : CliktCommand(name = "run") {
         val file = File(script)
         if (!file.isFile) throw CliktError("error: no such script: $script", statusCode = 2)
         val choice = fleetChoice()
-        val outcome = withSystemProperties(choice.toSystemProperties()) {
-            ScriptHost(ScriptClasspath.forScripts()).run(file, scriptArgs) { echo(it, err = true) }
+        val outcome = try {
+            withSystemProperties(choice.toSystemProperties()) {
+                ScriptHost(ScriptClasspath.forScripts()).run(file, scriptArgs) { echo(it, err = true) }
+            }
+        } catch (e: Throwable) {
+            // The scripting host may let the cancellation through rather than report it.
+            val interrupted = interruptionIn(e) ?: throw e
+            throw stopped(interrupted.signal)
         }
         when (outcome) {
             ScriptOutcome.Completed -> Unit
             is ScriptOutcome.CompileFailed -> throw CliktError(outcome.messages.joinToString("\n"), statusCode = 1)
             is ScriptOutcome.Threw -> {
+                interruptionIn(outcome.error)?.let { throw stopped(it.signal) }
                 val what = outcome.error.message ?: outcome.error.javaClass.name
                 val where = outcome.line?.let { " (${file.name}:$it)" }.orEmpty()
                 throw CliktError("error: $what$where", statusCode = 1)
             }
         }
     }
+
+    private fun stopped(signal: String) = CliktError("pod: stopped by $signal", statusCode = Interruption.EXIT_CODE)
 
     private fun fleetChoice(): FleetChoice {
         val address = connect

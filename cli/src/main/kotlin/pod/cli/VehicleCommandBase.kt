@@ -9,11 +9,16 @@ import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.int
 import com.github.ajalt.clikt.parameters.types.restrictTo
 import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.NonCancellable
 import kotlinx.coroutines.TimeoutCancellationException
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.runBlocking
+import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeout
+import kotlinx.coroutines.withTimeoutOrNull
 import pod.core.vehicle.VehicleLost
+import pod.launch.Interruption
+import pod.launch.Interrupted
 import pod.mavlink.GroundStation
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.action.ActionException
@@ -27,6 +32,9 @@ import kotlin.time.Duration.Companion.seconds
  * A command that talks to one vehicle: opens the link, waits for the vehicle (`--sysid` picks one
  * when several answer), runs [act], and turns Pod's typed errors into a one-line message with exit
  * code 1 (and an `error` JSON line with `--json`).
+ *
+ * Ctrl-C or SIGTERM cancels [act] ([Interruption]); [afterInterrupt] then leaves the vehicle safe,
+ * a line says how (an `interrupted` JSON object with `--json`) and the command exits with 130.
  */
 internal abstract class VehicleCommandBase(protected val out: Output, name: String) : CliktCommand(name = name) {
     private val connect by option("--connect", help = "link to the vehicle (udpin:, udpout:, tcp:)").default("udpin:0.0.0.0:14550")
@@ -41,13 +49,22 @@ internal abstract class VehicleCommandBase(protected val out: Output, name: Stri
     /** Does the work with the chosen vehicle. */
     protected abstract suspend fun act(vehicle: MavlinkVehicle)
 
+    /**
+     * Leaves [vehicle] safe after [act] was interrupted and says how ("holding in BRAKE"); throws
+     * when it could not. This default leaves the vehicle as it is: right for commands that do not
+     * fly it (a cancelled transfer ends itself). Commands that fly override it.
+     */
+    protected open suspend fun afterInterrupt(vehicle: MavlinkVehicle): String = "left as it was"
+
     override fun run() = runBlocking {
         prepare()
         val gcs = reportingLinkErrors { GroundStation.open(connect, this) }
         try {
             val vehicle = pick(gcs, wait)
             try {
-                act(vehicle)
+                Interruption.cancellable { act(vehicle) }
+            } catch (e: Interrupted) {
+                stopped(vehicle, e.signal)
             } catch (e: MissionException) {
                 fail(e.message ?: e.toString())
             } catch (e: CommandException) {
@@ -84,6 +101,26 @@ internal abstract class VehicleCommandBase(protected val out: Output, name: Stri
         }
     }
 
+    private suspend fun stopped(vehicle: MavlinkVehicle, signal: String): Nothing {
+        val outcome = withContext(NonCancellable) {
+            withTimeoutOrNull(SAFE_TIMEOUT) { runCatching { afterInterrupt(vehicle) } }
+                ?: Result.failure(IllegalStateException("no confirmation within $SAFE_TIMEOUT"))
+        }
+        val t = vehicle.telemetry
+        val how = outcome.getOrElse { "NOT confirmed safe: ${it.message ?: it}" }
+        out.line(
+            if (json) {
+                jsonLine(
+                    "event" to "interrupted", "signal" to signal, "sysid" to vehicle.systemId, "safe" to outcome.isSuccess, "state" to how,
+                    "mode" to t.mode.value?.name, "armed" to t.armed.value, "relative_alt_m" to t.position.value?.relativeAltitude?.meters,
+                )
+            } else {
+                "interrupted by $signal: vehicle ${vehicle.systemId} $how (mode ${t.mode.value?.name ?: "unknown"}, ${if (t.armed.value) "armed" else "disarmed"})"
+            },
+        )
+        throw CliktError("pod: stopped by $signal", statusCode = Interruption.EXIT_CODE)
+    }
+
     protected fun fail(message: String): Nothing {
         if (json) out.line(jsonLine("event" to "error", "message" to message))
         throw CliktError("error: $message", statusCode = 1)
@@ -93,5 +130,10 @@ internal abstract class VehicleCommandBase(protected val out: Output, name: Stri
     protected fun finish(text: String, vararg json: Pair<String, Any?>) {
         if (System.console() != null && !this.json) println()
         out.line(if (this.json) jsonLine("event" to "done", *json) else text)
+    }
+
+    private companion object {
+        /** How long an interrupted command waits for the vehicle to confirm it is safe. */
+        val SAFE_TIMEOUT: Duration = 15.seconds
     }
 }

@@ -3,6 +3,7 @@ package pod.launch
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.runBlocking
 import pod.core.engine.Engine
+import pod.core.engine.EngineEvent
 import pod.core.engine.Program
 import pod.mavlink.GroundStation
 import pod.mavlink.platform.MavlinkPlatform
@@ -13,8 +14,11 @@ import pod.sim.SimFlavor
 /**
  * Runs [block] as a Dolphin program on the fleet `pod run` chose ([FleetChoice]: `--sim N` drones
  * on loopback, or `--connect ADDRESS`), printing every task and vehicle event as it happens, and
- * returns its result. Without `pod run` it flies four simulated drones in real time. Meant for
- * `.main.kts` scripts and small programs' `main`:
+ * returns its result. Without `pod run` it flies four simulated drones in real time.
+ *
+ * Under `pod` (which takes over Ctrl-C and SIGTERM, see [Interruption]) a signal cancels the
+ * program: every vehicle it was flying is made safe, a line says which (and whether each vehicle
+ * confirmed it), and [Interrupted] is thrown. Meant for `.main.kts` scripts and small programs' `main`:
  *
  * ```
  * import pod.dsl.*
@@ -29,27 +33,64 @@ import pod.sim.SimFlavor
  */
 fun <T> pod(choice: FleetChoice = FleetChoice.fromSystemProperties(), print: (String) -> Unit = ::println, block: suspend Program.() -> T): T =
     runBlocking {
-        when (choice) {
-            is FleetChoice.Sim -> simulate(List(choice.count) { SimFlavor.ARDUCOPTER }, choice.timeScale, onLine = print) { block() }.first
-            is FleetChoice.Connect -> {
-                val station = GroundStation.open(choice.address, this)
-                try {
-                    val platform = MavlinkPlatform(station)
-                    // Vehicles heard but still booting are not yet offered to `pick`: say what each lacks, once.
-                    val said = HashSet<Pair<Int, String>>()
-                    val booting = launch {
-                        platform.initialising.collect { waiting ->
-                            waiting.forEach { (id, lacks) -> if (said.add(id to lacks)) print("vehicle $id: initialising, waiting for its $lacks") }
-                        }
-                    }
+        val madeSafe = SafeReport()
+        try {
+            // Only the program is cancellable: the fleet and its link must outlive it, to make the
+            // vehicles safe once it is cancelled.
+            when (choice) {
+                is FleetChoice.Sim -> simulate(List(choice.count) { SimFlavor.ARDUCOPTER }, choice.timeScale, onLine = print, onEvent = madeSafe::note) {
+                    val program = this
+                    Interruption.cancellable { program.block() }
+                }.first
+                is FleetChoice.Connect -> {
+                    val station = GroundStation.open(choice.address, this)
                     try {
-                        Engine(platform).runShowing({ id -> platform.vehicles.value.firstOrNull { it.id == id }?.name ?: "vehicle $id" }, onLine = print, block = block)
+                        val platform = MavlinkPlatform(station)
+                        // Vehicles heard but still booting are not yet offered to `pick`: say what each lacks, once.
+                        val said = HashSet<Pair<Int, String>>()
+                        val booting = launch {
+                            platform.initialising.collect { waiting ->
+                                waiting.forEach { (id, lacks) -> if (said.add(id to lacks)) print("vehicle $id: initialising, waiting for its $lacks") }
+                            }
+                        }
+                        try {
+                            val names = { id: Int -> platform.vehicles.value.firstOrNull { it.id == id }?.name ?: "vehicle $id" }
+                            Engine(platform).runShowing(names, onLine = print, onEvent = madeSafe::note) {
+                                val program = this
+                                Interruption.cancellable { program.block() }
+                            }
+                        } finally {
+                            booting.cancel()
+                        }
                     } finally {
-                        booting.cancel()
+                        station.close()
                     }
-                } finally {
-                    station.close()
                 }
+            }
+        } catch (e: Interrupted) {
+            print(madeSafe.summary(e.signal))
+            throw e
+        }
+    }
+
+/** The vehicles a cancelled program made safe, as one line for the person who stopped it. */
+private class SafeReport {
+    private val made = java.util.concurrent.CopyOnWriteArrayList<EngineEvent.MadeSafe>()
+
+    fun note(event: EngineEvent) {
+        if (event is EngineEvent.MadeSafe) made += event
+    }
+
+    fun summary(signal: String): String {
+        val (confirmed, unconfirmed) = made.partition { it.confirmed }
+        return buildString {
+            append("interrupted by $signal: program cancelled; ")
+            if (made.isEmpty()) append("no vehicle was flying")
+            if (confirmed.isNotEmpty()) append("made safe: ${confirmed.joinToString { "vehicle ${it.vehicle} (${it.state})" }}")
+            if (unconfirmed.isNotEmpty()) {
+                if (confirmed.isNotEmpty()) append("; ")
+                append("NOT confirmed safe: ${unconfirmed.joinToString { "vehicle ${it.vehicle} (${it.state})" }}")
             }
         }
     }
+}

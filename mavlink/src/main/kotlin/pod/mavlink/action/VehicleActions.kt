@@ -52,8 +52,9 @@ import pod.mavlink.telemetry.ModeRole
  * [pod.mavlink.command.CommandException] when the vehicle refused or never answered,
  * [ActionException] when it answered but did not do it, [VehicleLost] when it fell silent.
  *
- * Modes are picked per autopilot and airframe ([FlightModes.forRole]): hold is LOITER on ArduPilot
- * and AUTO.LOITER on PX4, never a mode in which a multicopter without stick input would sink.
+ * Modes are picked per autopilot and airframe ([FlightModes.forRole]): hold is BRAKE on an
+ * ArduCopter, LOITER on an ArduPlane and AUTO.LOITER on PX4, never a mode in which a multicopter
+ * without stick input would sink (ArduCopter's LOITER does).
  */
 public class VehicleActions internal constructor(private val vehicle: MavlinkVehicle) {
     @Volatile private var pausedByCommand: Boolean? = null
@@ -216,9 +217,22 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
         confirm("goto", "mode $guided", vehicle.telemetry.mode) { it?.name == guided }
     }
 
-    /** Stops and holds position (and altitude): LOITER, or AUTO.LOITER on PX4; a plane circles. */
+    /**
+     * Stops and holds position and altitude without needing anyone on the sticks, and waits until
+     * the heartbeat shows the mode: BRAKE on an ArduCopter, AUTO.LOITER on PX4; a plane circles
+     * where it is (ArduPlane LOITER). See [FlightModes.forRole] for the autopilots' sources.
+     */
     public suspend fun hold() {
-        setMode(role(ModeRole.HOLD))
+        val hold = role(ModeRole.HOLD)
+        val here = vehicle.telemetry.position.value?.location
+        // PX4's Hold is also where a goto flies (DO_REPOSITION in AUTO.LOITER), and choosing the
+        // mode a vehicle is already in changes nothing: a reposition onto where it is stops it
+        // there (PX4 src/modules/navigator/loiter.cpp Loiter::on_active -> reposition()).
+        if (hold == role(ModeRole.GUIDED) && vehicle.telemetry.mode.value?.name == hold && vehicle.telemetry.armed.value && here != null) {
+            goto(here)
+            return
+        }
+        setMode(hold)
     }
 
     /**

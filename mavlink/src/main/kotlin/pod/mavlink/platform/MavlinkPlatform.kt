@@ -22,8 +22,8 @@ import pod.mavlink.executor.MissionExecutor
 
 /**
  * The engine's [Platform] over a [GroundStation]: every vehicle the station hears that is usable,
- * in system-id order; [fly] runs a [MissionExecutor]; [makeSafe] holds (LOITER; a plane circles)
- * or returns to launch, confirmed by the vehicle's mode.
+ * in system-id order; [fly] runs a [MissionExecutor]; [makeSafe] holds (BRAKE on an ArduCopter; a
+ * plane circles) or returns to launch, confirmed by the vehicle's mode.
  *
  * A vehicle is offered to the engine (and so to `pick`) only once its home and its position are
  * known: a real autopilot has no home until its estimator sets an origin, tens of seconds after
@@ -75,7 +75,8 @@ public class MavlinkPlatform(
     }
 
     /**
-     * Holds ([SafeState.HOLD]: LOITER, AUTO.LOITER on PX4) or returns to launch
+     * Holds ([SafeState.HOLD]: [VehicleActions.hold][pod.mavlink.action.VehicleActions.hold], a
+     * mode that keeps altitude with nobody on the sticks) or returns to launch
      * ([SafeState.RETURN_HOME]) and returns once the vehicle's mode confirms it. A vehicle on the
      * ground and disarmed is safe as it is.
      */

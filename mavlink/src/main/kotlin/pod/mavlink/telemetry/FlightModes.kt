@@ -60,9 +60,15 @@ public object FlightModes {
     /**
      * The name of the mode that plays [role] on [autopilot] flying [type], or null when it has none
      * (an ArduPilot plane has no LAND mode: it lands through its mission's landing sequence).
+     *
+     * [ModeRole.HOLD] is a mode that keeps position and altitude with nobody on the sticks, since
+     * a vehicle Pod flies may have no transmitter (or one with its throttle at minimum).
      */
     public fun forRole(autopilot: Autopilot, type: VehicleType, role: ModeRole): String? = when {
         autopilot == Autopilot.PX4 -> when (role) {
+            // Hold (AUTO.LOITER) loiters where it is at its current altitude, no stick input used
+            // (PX4 src/modules/navigator/loiter.cpp Loiter::on_activation -> set_loiter_position:
+            // a loiter item from the current position, braking first on a multicopter).
             ModeRole.HOLD, ModeRole.GUIDED -> "AUTO.LOITER"
             ModeRole.MISSION -> "AUTO.MISSION"
             ModeRole.RETURN -> "AUTO.RTL"
@@ -70,6 +76,9 @@ public object FlightModes {
             ModeRole.TAKEOFF -> "AUTO.TAKEOFF"
         }
         type.isFixedWing -> when (role) {
+            // ArduPlane LOITER circles where it is at the current altitude under automatic
+            // throttle (ArduPlane/mode_loiter.cpp ModeLoiter::_enter: auto_throttle_mode,
+            // do_loiter_at_location from the current location); the stick does not set the height.
             ModeRole.HOLD -> "LOITER"
             ModeRole.GUIDED -> "GUIDED"
             ModeRole.MISSION -> "AUTO"
@@ -78,9 +87,14 @@ public object FlightModes {
             ModeRole.TAKEOFF -> "TAKEOFF"
         }
         else -> when (role) {
-            // LOITER holds position and altitude with no pilot input; modes that need sticks
-            // (STABILIZE, ALT_HOLD) would let a multicopter drift or sink.
-            ModeRole.HOLD -> "LOITER"
+            // BRAKE: stops and holds position and altitude on its own (ArduCopter/mode_brake.cpp
+            // ModeBrake::run: climb rate 0; init sets no timeout, which only failsafes set).
+            // Never LOITER or POSHOLD: they take the climb rate from the throttle stick, so with
+            // no transmitter (stick at minimum) they descend, land and disarm (mode_loiter.cpp
+            // ModeLoiter::run, mode_poshold.cpp: get_pilot_desired_climb_rate). Not GUIDED
+            // either: switching to GUIDED while in GUIDED changes nothing (mode.cpp
+            // Copter::set_mode returns at once for the current mode), so a goto would go on.
+            ModeRole.HOLD -> "BRAKE"
             ModeRole.GUIDED, ModeRole.TAKEOFF -> "GUIDED"
             ModeRole.MISSION -> "AUTO"
             ModeRole.RETURN -> "RTL"

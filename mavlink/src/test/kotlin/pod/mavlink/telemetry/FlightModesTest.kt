@@ -52,7 +52,8 @@ class FlightModesTest : StringSpec({
                 }
             }
         }
-        FlightModes.forRole(Autopilot.ARDUPILOT, VehicleType.QUADROTOR, ModeRole.HOLD) shouldBe "LOITER"
+        FlightModes.forRole(Autopilot.ARDUPILOT, VehicleType.QUADROTOR, ModeRole.HOLD) shouldBe "BRAKE"
+        FlightModes.forRole(Autopilot.ARDUPILOT, VehicleType.FIXED_WING, ModeRole.HOLD) shouldBe "LOITER"
         FlightModes.forRole(Autopilot.PX4, VehicleType.QUADROTOR, ModeRole.HOLD) shouldBe "AUTO.LOITER"
         FlightModes.names(Autopilot.PX4, VehicleType.QUADROTOR).contains("AUTO.MISSION") shouldBe true
     }

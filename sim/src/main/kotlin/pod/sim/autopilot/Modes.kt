@@ -5,8 +5,14 @@ import pod.core.vehicle.VehicleType
 
 /** What a flight mode makes the simulated vehicle do. */
 internal enum class Behaviour {
-    /** Manual or stabilised modes with nobody on the sticks: a multirotor holds, a plane flies straight. */
+    /** Manual or stabilised modes with nobody on the sticks: a plane flies straight; a multirotor's throttle is at minimum, so it falls. */
     MANUAL,
+    /**
+     * The throttle stick sets the climb rate (ArduCopter ALT_HOLD, LOITER, POSHOLD…): with nobody on
+     * the sticks it is at minimum, so the multirotor descends at the pilot's maximum rate, lands
+     * and disarms.
+     */
+    STICK_CLIMB_RATE,
     /** Hold position (multirotor) or circle here (plane). */
     HOLD,
     /** Guided: hold or go where DO_REPOSITION / NAV_TAKEOFF says. */
@@ -39,6 +45,14 @@ internal object Modes {
             else -> null
         }
         type.isMultirotor -> when (name) {
+            // The simulator has no transmitter, as a vehicle flown only by a ground station: the
+            // throttle stick reads minimum (SITL's RC3 = 1000). ArduCopter's ALT_HOLD, LOITER,
+            // POSHOLD, SPORT, FLOWHOLD and ZIGZAG turn it into a climb rate
+            // (ArduCopter/mode_loiter.cpp ModeLoiter::run, mode_poshold.cpp ModePosHold::run,
+            // mode_althold.cpp ModeAltHold::run: get_pilot_desired_climb_rate(throttle) limited to
+            // -get_pilot_speed_dn()); STABILIZE, ACRO and DRIFT pass it to the motors as it is.
+            "ALT_HOLD", "LOITER", "POSHOLD", "SPORT", "FLOWHOLD", "ZIGZAG" -> Behaviour.STICK_CLIMB_RATE
+            "STABILIZE", "ACRO", "DRIFT" -> Behaviour.MANUAL
             "AUTO", "AUTO_RTL" -> Behaviour.AUTO
             "GUIDED", "GUIDED_NOGPS" -> Behaviour.GUIDED
             "CIRCLE" -> Behaviour.CIRCLE

@@ -44,6 +44,9 @@ internal object ParamTables {
         ParamDef("RTL_ALT", 1500.0, INT32, 200.0, 300000.0), // cm
         ParamDef("RTL_SPEED", 0.0, REAL32, 0.0, 2000.0), // cm/s, 0 = WPNAV_SPEED
         ParamDef("LAND_SPEED", 50.0, INT16, 30.0, 200.0), // cm/s
+        // Pilot climb and descent limits: the descent with the throttle stick at minimum (0 = PILOT_SPEED_UP).
+        ParamDef("PILOT_SPEED_UP", 250.0, INT16, 50.0, 500.0), // cm/s
+        ParamDef("PILOT_SPEED_DN", 0.0, INT16, 0.0, 500.0), // cm/s
         ParamDef("DISARM_DELAY", 10.0, INT8, 0.0, 127.0), // s
         ParamDef("CIRCLE_RADIUS", 500.0, REAL32, 0.0, 200000.0), // cm
         ParamDef("CIRCLE_RATE", 20.0, REAL32, -90.0, 90.0), // deg/s

@@ -46,6 +46,9 @@ internal sealed interface Activity {
 
     /** Flying straight on [heading] at [altitude]. */
     data class Cruise(val heading: Double, val altitude: Double) : Activity
+
+    /** Descending at [rate] m/s (over [over], or wherever it stops) until it touches down; then parked. */
+    data class Descending(val over: Location?, val rate: Double) : Activity
 }
 
 /**
@@ -207,12 +210,14 @@ internal class SimAutopilot(
         is Activity.Landing -> Guidance.Land(a.at)
         Activity.Mission -> mission.guidance()
         is Activity.Cruise -> Guidance.Cruise(a.heading, a.altitude)
+        is Activity.Descending -> Guidance.Descend(a.over, a.rate)
     }
 
     private fun afterStep() {
         when (val a = activity) {
             is Activity.Takeoff -> if (body.location.altitude.meters >= a.altitude - if (multirotor) 0.3 else 2.0) {
-                if (a.then != null) setMode(a.then) else activity = holdHere()
+                // Take-off done, the mode takes over: GUIDED holds, LOITER with no stick input sinks.
+                if (a.then != null) setMode(a.then) else enterMode(modeName)
             }
             is Activity.GoTo -> if (multirotor && horizontalDistance(body.location, a.target) < 0.5 &&
                 kotlin.math.abs(body.location.altitude.meters - a.target.altitude.meters) < 0.5
@@ -227,6 +232,8 @@ internal class SimAutopilot(
             if (activity == Activity.Mission) mission.touchedDown() else activity = Activity.Parked
         }
         if (activity == Activity.Mission && mission.finishedOnGround) activity = Activity.Parked
+        // Touched down with the throttle at minimum: landed, and disarmed after DISARM_DELAY.
+        if (activity is Activity.Descending && body.onGround && body.airspeed < 0.1) activity = Activity.Parked
         autoDisarm()
     }
 
@@ -280,8 +287,15 @@ internal class SimAutopilot(
         activity = when (Modes.behaviour(autopilot, type, name) ?: Behaviour.HOLD) {
             Behaviour.MANUAL -> when {
                 !flying -> Activity.Parked
-                multirotor -> holdHere()
+                // Throttle at minimum with the motors passing it through (ArduCopter
+                // mode_stabilize.cpp ModeStabilize::run: get_pilot_desired_throttle): it drops.
+                multirotor -> Activity.Descending(null, MultirotorAirframe.FALL_SPEED)
                 else -> Activity.Cruise(body.heading, alt)
+            }
+            Behaviour.STICK_CLIMB_RATE -> when {
+                !flying -> Activity.Parked
+                multirotor -> Activity.Descending(if (name == "ALT_HOLD") null else body.location, pilotDescentRate())
+                else -> holdHere()
             }
             Behaviour.HOLD, Behaviour.GUIDED -> if (flying) holdHere() else Activity.Parked
             Behaviour.CIRCLE -> if (!flying) {
@@ -308,6 +322,12 @@ internal class SimAutopilot(
             }
         }
     }
+
+    /**
+     * How fast an ArduCopter descends with the throttle stick at minimum, m/s: PILOT_SPEED_DN, or
+     * PILOT_SPEED_UP when that is 0 (ArduCopter/Attitude.cpp Copter::get_pilot_speed_dn).
+     */
+    fun pilotDescentRate(): Double = params["PILOT_SPEED_DN"].takeIf { it > 0 }.let { it ?: params["PILOT_SPEED_UP"] } / 100
 
     /** Take-off altitude (AMSL) for a take-off with [requested] metres (null: the flavour's default). */
     fun takeoffAltitude(requested: Double?): Double = home.altitude.meters + (

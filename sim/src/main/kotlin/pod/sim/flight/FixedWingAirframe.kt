@@ -67,6 +67,11 @@ internal object FixedWingAirframe : Airframe {
                 heading = guidance.heading
                 targetAlt = guidance.altitude
             }
+            is Guidance.Descend -> {
+                // A plane never gets this (its modes keep flying); glide down straight ahead.
+                targetAlt = ground - 1.0
+                sinkLimit = min(perf.descent, guidance.rate)
+            }
         }
         if (!armed) {
             targetAlt = ground - 1.0

@@ -25,6 +25,12 @@ internal sealed interface Guidance {
     /** Land: a multirotor descends (flying over [at] first when given), a plane glides down to [at]. */
     data class Land(val at: Location?) : Guidance
 
+    /**
+     * Descend at [rate] m/s to the ground and stay there: a multirotor whose throttle stick is at
+     * minimum, holding its position over [over] (null: braking to a stop wherever that is).
+     */
+    data class Descend(val over: Location?, val rate: Double) : Guidance
+
     /** Hold [heading] and [altitude] (a plane in a manual mode with nobody on the sticks). */
     data class Cruise(val heading: Double, val altitude: Double) : Guidance
 }

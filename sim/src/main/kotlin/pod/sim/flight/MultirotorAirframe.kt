@@ -16,7 +16,8 @@ import kotlin.math.sqrt
 internal object MultirotorAirframe : Airframe {
     private const val VERTICAL_ACCEL = 5.0 // m/s², how fast the climb rate follows its demand
     private const val LAND_SLOW_HEIGHT = 10.0 // m; ArduCopter's LAND_ALT_LOW: below it, land at LAND_SPEED
-    private const val FALL_SPEED = 10.0 // m/s; a multirotor disarmed in the air drops
+    /** m/s; a multirotor disarmed in the air, or with its throttle at minimum, drops. */
+    const val FALL_SPEED = 10.0
 
     override fun step(body: Body, guidance: Guidance, perf: Performance, ground: Double, armed: Boolean, dt: Double): Body {
         val alt = body.location.altitude.meters
@@ -55,7 +56,13 @@ internal object MultirotorAirframe : Airframe {
                     target = approach(body, n to e, perf.cruise, perf)
                 }
             }
-            is Guidance.Cruise -> Unit // a multirotor with nobody on the sticks holds position
+            is Guidance.Descend -> {
+                targetAlt = ground - 1.0
+                descentLimit = guidance.rate
+                climbLimit = 0.0
+                target = guidance.over?.let { approach(body, northEast(body.location, it), perf.cruise, perf) } ?: (0.0 to 0.0)
+            }
+            is Guidance.Cruise -> Unit
         }
         if (body.onGround && targetAlt <= ground + 0.2) {
             return body.copy(velocityNorth = 0.0, velocityEast = 0.0, velocityDown = 0.0, airspeed = 0.0, throttle = if (armed) 5 else 0)
