@@ -146,7 +146,14 @@ class MissionExecutorSpec : StringSpec({
                     MissionStep.Land(home.at(0, 0, 0.0), 90.deg, PrecisionLand.OPPORTUNISTIC),
                 )
                 vehicle.mission.upload(MissionPlanner.plan(Mission("m", null, steps), missionFlavor, home).items)
-                MissionReader.steps(vehicle.mission.download(), missionFlavor) shouldBe steps
+                val read = MissionReader.steps(vehicle.mission.download(), missionFlavor)
+                if (plane) {
+                    // The planner puts an approach waypoint before a plane's landing; it reads back as the waypoint it is.
+                    (read[read.size - 2] is MissionStep.Waypoint) shouldBe true
+                    read.filterIndexed { i, _ -> i != read.size - 2 } shouldBe steps
+                } else {
+                    read shouldBe steps
+                }
             }
         }
     }

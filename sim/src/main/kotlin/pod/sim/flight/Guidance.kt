@@ -25,6 +25,12 @@ internal sealed interface Guidance {
     /** Land: a multirotor descends (flying over [at] first when given), a plane glides down to [at]. */
     data class Land(val at: Location?) : Guidance
 
+    /**
+     * A plane on a landing glide: fly [heading] at landing speed towards [altitude] (it may be below
+     * the ground), sinking no faster than [sinkLimit] m/s.
+     */
+    data class Glide(val heading: Double, val altitude: Double, val sinkLimit: Double) : Guidance
+
     /** Hold [heading] and [altitude] (a plane in a manual mode with nobody on the sticks). */
     data class Cruise(val heading: Double, val altitude: Double) : Guidance
 }

@@ -55,7 +55,7 @@ internal object MultirotorAirframe : Airframe {
                     target = approach(body, n to e, perf.cruise, perf)
                 }
             }
-            is Guidance.Cruise -> Unit // a multirotor with nobody on the sticks holds position
+            is Guidance.Cruise, is Guidance.Glide -> Unit // a multirotor with nobody on the sticks holds position
         }
         if (body.onGround && targetAlt <= ground + 0.2) {
             return body.copy(velocityNorth = 0.0, velocityEast = 0.0, velocityDown = 0.0, airspeed = 0.0, throttle = if (armed) 5 else 0)
