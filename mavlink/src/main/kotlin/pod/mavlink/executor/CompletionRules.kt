@@ -36,10 +36,9 @@ internal object CompletionRules {
 }
 
 /**
- * Whether a plane is established on the circle of [loiter]: no autopilot reports that an unlimited
- * loiter is reached (ArduPlane's verify_loiter_unlim never completes; PX4 sends no
- * MISSION_ITEM_REACHED for it), and a plane on its way passes within any "near enough" distance of
- * the centre long before it circles. So it counts as established once, near the centre (within
+ * Whether a plane is established on the circle of [loiter]: an unlimited loiter is never reported
+ * reached (ArduPlane's Plane::verify_loiter_unlim always returns false, commands_logic.cpp), and a
+ * plane on its way passes within any "near enough" distance of the centre long before it circles. So it counts as established once, near the centre (within
  * the item's radius or its own loiter radius, at most [CompletionRules.PLANE_MAX_RADIUS_M], with
  * a margin) and at the loiter's height, it has flown [ARC_DEGREES] around the centre moving along
  * the circle (little of its speed towards or away from the centre). Feed it every position while
