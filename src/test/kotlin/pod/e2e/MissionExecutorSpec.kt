@@ -166,7 +166,14 @@ class MissionExecutorSpec : StringSpec({
                         else -> step
                     }
                 }
-                kept(MissionReader.steps(vehicle.mission.download(), missionFlavor)) shouldBe kept(steps)
+                val read = kept(MissionReader.steps(vehicle.mission.download(), missionFlavor))
+                if (plane) {
+                    // The planner puts an approach waypoint before a plane's landing; it reads back as the waypoint it is.
+                    (read[read.size - 2] is MissionStep.Waypoint) shouldBe true
+                    read.filterIndexed { i, _ -> i != read.size - 2 } shouldBe kept(steps)
+                } else {
+                    read shouldBe kept(steps)
+                }
             }
         }
     }

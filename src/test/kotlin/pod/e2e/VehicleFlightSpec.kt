@@ -49,6 +49,8 @@ class VehicleFlightSpec : StringSpec({
         Flights.flying(SimVehicleConfig(systemId = 32, type = VehicleType.FIXED_WING, timeScale = 20.0)) { vehicle, _ ->
             val home = SimVehicleConfig.DEFAULT_HOME
             vehicle.mission.upload(Flights.planeCircuit(home))
+            // ArduPlane arms a mission holding DO_LAND_START only with RTL_AUTOLAND set (AP_Arming_Plane::mission_checks).
+            vehicle.params.write("RTL_AUTOLAND", 2.0)
             val (reached, recording) = recordReached(vehicle)
             Flights.keepArmedOnGround(vehicle)
             vehicle.action.arm()

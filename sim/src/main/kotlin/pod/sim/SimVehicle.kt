@@ -297,6 +297,7 @@ public class SimVehicle(
     private suspend fun serveMission(frame: MavFrame, message: MissionMessage) {
         missionServer.home = homeItem(autopilot.home)
         val replies = missionServer.onMessage(message, clockNanos())
+        autopilot.missionChanged()
         for (reply in replies) send(MissionWire.encode(reply, frame.systemId, frame.componentId))
         missionPeer = frame.systemId to frame.componentId
         scheduleMissionTimer()

@@ -37,14 +37,17 @@ import pod.mavlink.telemetry.FlightModes
 import pod.mavlink.telemetry.ModeRole
 
 /**
- * Flies one [mission] on one [vehicle]: clears the vehicle's list and uploads the plan for its
- * flavour, arms it right before the start (ArduCopter in GUIDED, so AUTO then flies the take-off
- * item), starts it, follows MISSION_CURRENT and MISSION_ITEM_REACHED as mission-step events, and
- * returns when the mission is complete:
+ * Flies one [mission] on one [vehicle]: replaces the vehicle's list with the plan for its flavour
+ * (a vehicle flying its previous mission holds first: ArduPilot will not clear a running mission),
+ * arms it right before the start in a mode it arms in (ArduCopter in GUIDED, so AUTO then flies the
+ * take-off item; ArduPlane in its hold mode, since a plane left in RTL will not arm), starts it,
+ * follows MISSION_CURRENT and MISSION_ITEM_REACHED as mission-step events, and returns when the
+ * mission is complete:
  * - [MissionCompletion.LAST_STEP_DONE]: the last step is done (a plane whose mission ends with a
  *   return home: the return item is reached, since it then circles home);
  * - [MissionCompletion.LANDED]: on the ground and disarmed after the last step;
- * - [MissionCompletion.LOITERING]: at the final loiter point, at its height.
+ * - [MissionCompletion.LOITERING]: the final loiter is the current item and the vehicle is there, at
+ *   its height (a plane: established on its circle, see [CompletionRules]).
  *
  * A vehicle already flying is not armed again, nor does its home change. Failures are typed:
  * [MissionNotFlyable] before anything is sent, the transfer and command exceptions of the
@@ -112,8 +115,7 @@ public class MissionExecutor(
         }
 
         _state.value = MissionRunState.UPLOADING
-        vehicle.mission.clear()
-        vehicle.mission.upload(plan.items)
+        MissionReplacement.replace(vehicle, plan.items, flavor, airborne)
         emit(MissionEvent.Uploaded(mission.steps.size))
 
         _state.value = MissionRunState.STARTING
@@ -130,7 +132,7 @@ public class MissionExecutor(
                 }.collect { inbox.send(it) }
             }
             if (!airborne) {
-                if (flavor == MissionFlavor.ARDUCOPTER) vehicle.action.setMode(FlightModes.forRole(identity.autopilot, identity.type, ModeRole.GUIDED)!!)
+                MissionReplacement.armingMode(identity, flavor, vehicle.telemetry.mode.value?.name)?.let { vehicle.action.setMode(it) }
                 vehicle.action.arm()
             }
             vehicle.action.startMission()
@@ -159,6 +161,7 @@ public class MissionExecutor(
         val identity = vehicle.identity.value
         val missionMode = FlightModes.forRole(identity.autopilot, identity.type, ModeRole.MISSION)
         val finalLoiter = mission.steps.last() as? MissionStep.Loiter
+        val circle = finalLoiter?.takeIf { flavor.fixedWing }?.let { CircleWatch(it) }
         var seen: Input.Vehicle? = null
         var airborneSeen = airborneAtStart
         var leftMission: TimeMark? = null
@@ -182,7 +185,8 @@ public class MissionExecutor(
             MissionCompletion.LANDED -> v != null && v.landed == LandedState.ON_GROUND && !v.armed &&
                 (tracker.allDone || (airborneSeen && tracker.currentItem >= tracker.lastStepStart))
             MissionCompletion.LOITERING -> finalLoiter != null && v?.position != null && tracker.next >= plan.stepCount - 1 &&
-                tracker.currentItem >= tracker.lastStepStart && CompletionRules.loitering(finalLoiter, flavor, v.position)
+                tracker.currentItem >= tracker.lastStepStart &&
+                (circle?.established(v.position) ?: CompletionRules.loitering(finalLoiter, flavor, v.position))
         }
 
         while (true) {

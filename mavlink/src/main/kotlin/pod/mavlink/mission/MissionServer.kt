@@ -66,6 +66,14 @@ public class MissionServer(
     /** Home, written over item 0 of an uploaded MISSION by the ArduPilot flavour. */
     public var home: MissionItem? = null
 
+    /**
+     * Whether the vehicle lets [MissionMessage.ClearAll] empty a list now; a refusal is answered
+     * MISSION_ACK ERROR. The vehicle sets it: ArduPilot refuses to clear a mission it is flying
+     * (MissionItemProtocol::handle_mission_clear_all answers ERROR when AP_Mission::clear refuses
+     * a MISSION_RUNNING mission while armed).
+     */
+    public var clearAllowed: (MissionType) -> Boolean = { true }
+
     /** The item being executed in the MISSION list. */
     public var current: Int = 0
         private set
@@ -97,7 +105,11 @@ public class MissionServer(
             listOf(MissionMessage.Count(message.type, list(message.type).size))
         }
         is MissionMessage.Request -> onRequest(message, now)
-        is MissionMessage.ClearAll -> if (busy(message.type)) deny(message.type) else {
+        is MissionMessage.ClearAll -> if (busy(message.type)) {
+            deny(message.type)
+        } else if (!clearAllowed(message.type)) {
+            listOf(MissionMessage.Ack(message.type, MissionResult.ERROR))
+        } else {
             lists.remove(message.type)
             if (message.type == MissionType.MISSION) current = 0
             listOf(MissionMessage.Ack(message.type, MissionResult.ACCEPTED))

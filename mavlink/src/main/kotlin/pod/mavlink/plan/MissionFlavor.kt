@@ -6,8 +6,8 @@ import pod.core.vehicle.VehicleType
 
 /**
  * The autopilot and airframe family a mission is written for: it decides how mission steps become
- * MAVLink items (item 0 as home on ArduPilot, DO_LAND_START before a plane's landing, what PX4
- * refuses) and how a vehicle is started on its mission.
+ * MAVLink items (item 0 as home on ArduPilot, an approach waypoint before a plane's landing, what
+ * PX4 refuses) and how a vehicle is started on its mission.
  */
 public enum class MissionFlavor(
     /** True when item 0 of the list is home and is not flown (ArduPilot). */

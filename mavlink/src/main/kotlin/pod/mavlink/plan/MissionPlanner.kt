@@ -20,7 +20,9 @@ import pod.mavlink.mission.MissionItem
  * Items travel as MISSION_ITEM_INT in MAV_FRAME_GLOBAL_RELATIVE_ALT (heights above home); items
  * without a position in MAV_FRAME_MISSION, which PX4 requires for them. What differs per flavour,
  * from ArduPilot's and PX4's mission parsers:
- * - ArduPilot: item 0 is home (absolute altitude); ArduPlane gets DO_LAND_START before each landing.
+ * - ArduPilot: item 0 is home (absolute altitude).
+ * - Fixed-wing: a landing is preceded by an approach waypoint ([LandingApproach]) from which the
+ *   glide is a few degrees; no DO_LAND_START (ArduPlane would refuse to arm with its defaults).
  * - ArduCopter and PX4 have no NAV_CONTINUE_AND_CHANGE_ALT: a change of altitude becomes a
  *   waypoint over the previous position at the new height. ArduPlane flies it as that item.
  * - PX4 refuses NAV_LOITER_TURNS: the turns become NAV_LOITER_TIME for as long as the circles take
@@ -53,13 +55,19 @@ public object MissionPlanner {
         val out = Builder(flavor)
         if (flavor.homeAtZero) out.add(null, MissionItem(0, FRAME_GLOBAL, MavCommands.NAV_WAYPOINT, x = launch.latE7, y = launch.lonE7, z = launch.altitude.meters.toFloat()))
         var last = launch.copy(altitude = pod.core.units.Distance.ZERO)
+        var lastCourse: Double? = null
         mission.steps.forEachIndexed { index, step ->
             when (step) {
                 is MissionStep.TakeOff -> out.add(index, positioned(MavCommands.NAV_TAKEOFF, step.location, p1 = if (flavor.fixedWing) step.pitch.degrees.toFloat() else 0f, p4 = yawUnchanged(flavor)))
                 is MissionStep.Waypoint -> out.add(index, positioned(MavCommands.NAV_WAYPOINT, step.location, p1 = step.hold.toDouble(DurationUnit.SECONDS).toFloat(), p4 = yawUnchanged(flavor)))
                 is MissionStep.Loiter -> out.add(index, loiter(step, flavor))
                 is MissionStep.Land -> {
-                    if (flavor == MissionFlavor.ARDUPLANE) out.add(index, unpositioned(MavCommands.DO_LAND_START))
+                    // No DO_LAND_START: ArduPlane refuses to arm a mission holding one while RTL_AUTOLAND is 0,
+                    // its default (AP_Arming_Plane::mission_checks), and flies the landing in order without it.
+                    if (flavor.fixedWing) {
+                        val approach = LandingApproach.point(step.location, last, step.yaw, lastCourse)
+                        out.add(index, positioned(MavCommands.NAV_WAYPOINT, approach, p4 = yawUnchanged(flavor)))
+                    }
                     out.add(index, positioned(MavCommands.NAV_LAND, step.location.copy(altitude = pod.core.units.Distance.ZERO), p2 = precision(step.precision).toFloat(), p4 = step.yaw?.degrees?.toFloat() ?: Float.NaN))
                 }
                 MissionStep.ReturnHome -> out.add(index, unpositioned(MavCommands.NAV_RETURN_TO_LAUNCH))
@@ -82,6 +90,8 @@ public object MissionPlanner {
                 is MissionStep.StartCapture -> out.add(index, unpositioned(MavCommands.IMAGE_START_CAPTURE, p2 = step.interval.toDouble(DurationUnit.SECONDS).toFloat(), p3 = step.count.toFloat()))
                 MissionStep.StopCapture -> out.add(index, unpositioned(MavCommands.IMAGE_STOP_CAPTURE))
             }
+            val moved = (step as? MissionStep.Navigation)?.location ?: if (step == MissionStep.ReturnHome) launch else null
+            if (moved != null) LandingApproach.bearing(last, moved)?.takeIf { last.distanceTo(moved).meters > 1.0 }?.let { lastCourse = it }
             when (step) {
                 is MissionStep.Navigation -> last = step.location
                 is MissionStep.ChangeAltitude -> last = last.copy(altitude = step.height)

@@ -64,7 +64,10 @@ class MissionPlanTest : StringSpec({
             checkAll(300, Arb.list(steps(flavor), 1..25)) { steps ->
                 val plan = MissionPlanner.plan(Mission("m", null, steps), flavor, home)
                 plan.keyedCommands shouldBe emptyList()
-                MissionReader.steps(plan.items, flavor) shouldBe steps
+                // A plane's landing step also holds its approach waypoint, which reads back as a waypoint of its own.
+                val approaches = plan.items.indices.filter { i -> plan.items[i].command == MavCommands.NAV_WAYPOINT && plan.stepOf(i)?.let { steps[it] } is MissionStep.Land }
+                approaches.size shouldBe if (flavor.fixedWing) steps.count { it is MissionStep.Land } else 0
+                MissionReader.steps(plan.items.filterIndexed { i, _ -> i !in approaches }, flavor) shouldBe steps
             }
         }
 
@@ -91,16 +94,40 @@ class MissionPlanTest : StringSpec({
         MissionReader.mission("m", plan.items, MissionFlavor.ARDUCOPTER).home?.latitude shouldBe (home.latitude plusOrMinus 1e-7)
     }
 
-    "an ArduPlane landing is preceded by DO_LAND_START, and both items map to the landing step" {
+    "an ArduPlane landing is preceded by an approach waypoint, not DO_LAND_START, and both items map to the landing step" {
         val a = home.copy(altitude = 40.m)
         val plan = MissionPlanner.plan(
             Mission("m", null, listOf(MissionStep.TakeOff(a, 15.deg), MissionStep.Waypoint(a), MissionStep.Land(a.copy(altitude = 0.m)))),
             MissionFlavor.ARDUPLANE, home,
         )
-        plan.items.map { it.command } shouldBe listOf(16, 22, 16, MavCommands.DO_LAND_START, 21)
+        plan.items.map { it.command } shouldBe listOf(16, 22, 16, 16, 21)
+        plan.items.none { it.command == MavCommands.DO_LAND_START } shouldBe true
         plan.itemsOf(2) shouldBe listOf(3, 4)
         plan.items[1].param1 shouldBe 15f
         plan.items[4].param4.isNaN() shouldBe true
+    }
+
+    "a fixed-wing landing glides about 5° from an approach point into the landing direction, even from a waypoint over the land point" {
+        val land = home.offset(north = 500.m, east = 0.m).copy(altitude = 0.m)
+        // returnHomeAndLand's shape: out north, back over the land point at height, land there.
+        val steps = listOf(
+            MissionStep.TakeOff(home.copy(altitude = 40.m), 15.deg),
+            MissionStep.Waypoint(land.offset(north = 900.m, east = 0.m).copy(altitude = 80.m)),
+            MissionStep.Waypoint(land.copy(altitude = 80.m)),
+            MissionStep.Land(land),
+        )
+        for (flavor in listOf(MissionFlavor.ARDUPLANE, MissionFlavor.PX4_FIXED_WING)) {
+            val plan = MissionPlanner.plan(Mission("m", null, steps), flavor, home)
+            val (approach, touchdown) = plan.itemsOf(3).map { plan.items[it] }
+            touchdown.command shouldBe MavCommands.NAV_LAND
+            val from = Location(approach.latitude, approach.longitude)
+            val distance = from.distanceTo(Location(touchdown.latitude, touchdown.longitude)).meters
+            val glide = Math.toDegrees(kotlin.math.atan(approach.z / distance))
+            glide shouldBe (LandingApproach.GLIDE_DEGREES plusOrMinus 0.2)
+            approach.z shouldBe LandingApproach.APPROACH_HEIGHT.meters.toFloat()
+            // The plane came south over the land point: it lands heading south, from the north.
+            (approach.latitude > touchdown.latitude) shouldBe true
+        }
     }
 
     "PX4 flies loiter turns as a timed loiter, since it refuses NAV_LOITER_TURNS" {

@@ -162,9 +162,19 @@ internal class Commands(private val ap: SimAutopilot) {
         { "Arm: Accels inconsistent".takeIf { !ap.sensorsReady } },
         { "Arm: AHRS: waiting for home".takeIf { !ap.positionReady } },
         { "PreArm: Battery 1 below minimum arming voltage".takeIf { checksEnabled() && packVoltage(ap.charge) < ap.params["BATT_ARM_VOLT"] } },
-        { "Arm: Mode not armable".takeIf { !modeArmable() } },
+        // ArduPlane names the mode (AP_Arming_Plane::pre_arm_checks: "%s %s" of the mode's name and
+        // "mode not armable"; ModeRTL::_pre_arm_checks refuses): "Arm: RTL mode not armable".
+        { (if (ap.multirotor) "Arm: Mode not armable" else "Arm: ${ap.modeName} mode not armable").takeIf { !modeArmable() } },
+        { "Arm: DO_LAND_START set and RTL_AUTOLAND disabled".takeIf { checksEnabled() && planeLandStartRefused() } },
         { "PreArm: Calibration in progress".takeIf { calibration != null } },
     )
+
+    /**
+     * ArduPlane will not arm a mission holding DO_LAND_START while RTL_AUTOLAND is 0, its default
+     * (AP_Arming_Plane::mission_checks).
+     */
+    private fun planeLandStartRefused(): Boolean =
+        !ap.multirotor && ap.params["RTL_AUTOLAND"].toInt() == 0 && ap.mission.landStartIndex() != null
 
     private fun px4Mode(main: Int, sub: Int): Long = (main.toLong() shl 16) or (sub.toLong() shl 24)
 

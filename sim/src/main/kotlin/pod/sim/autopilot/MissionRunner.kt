@@ -65,15 +65,22 @@ internal class MissionRunner(private val ap: SimAutopilot) {
     private class ItemState {
         var target: Location? = null
         var arrivedAt: Double? = null
-        var previousDistance = Double.MAX_VALUE
         var circled = 0.0
         var lastBearing: Double? = null
         var waitUntil: Double? = null
         var plan: ReturnPlan? = null
+        var approach: SlopeLanding? = null
+        var legStart: Location? = null
     }
 
     private val items: List<MissionItem> get() = ap.missionServer.list(MissionType.MISSION)
     private val first: Int get() = if (ap.isPx4) 0 else 1
+
+    /**
+     * ArduPilot's MISSION_RUNNING: not yet complete, or ended in a landing (a plane's NAV_LAND never
+     * completes in AP_Landing::type_slope_verify_land; the mission runs until disarmed).
+     */
+    val running: Boolean get() = !done || finishedOnGround
 
     /** True when the list holds something AUTO can fly. */
     fun hasMission(): Boolean = items.size > first
@@ -211,6 +218,7 @@ internal class MissionRunner(private val ap: SimAutopilot) {
             NAV_LAND, NAV_VTOL_LAND -> {
                 landing = true
                 holdAt = null
+                if (!ap.isPx4 && !ap.multirotor) return slopeLanding(target)
                 Guidance.Land(if (it.x == 0 && it.y == 0) (if (ap.multirotor) null else body.location) else target)
             }
             NAV_RETURN_TO_LAUNCH -> {
@@ -236,6 +244,19 @@ internal class MissionRunner(private val ap: SimAutopilot) {
         }
     }
 
+    /** ArduPlane's NAV_LAND: the glide slope from the previous waypoint, flown by [SlopeLanding]. */
+    private fun slopeLanding(target: Location): Guidance {
+        val approach = item.approach ?: SlopeLanding(ap, previousWaypoint() ?: ap.body.location, target).also { a ->
+            item.approach = a
+            ap.text(Severity.INFO, String.format(java.util.Locale.ROOT, "Landing glide slope %.1f degrees", a.slopeDegrees))
+        }
+        return approach.guidance()
+    }
+
+    /** Where the NAV item before the current one pointed (what ArduPlane calls prev_WP_loc), or null. */
+    private fun previousWaypoint(): Location? =
+        (seq - 1 downTo first).asSequence().map { items[it] }.firstOrNull { it.command in NAV && (it.x != 0 || it.y != 0) }?.let { location(it) }
+
     private fun waypoint(it: MissionItem, target: Location): Guidance? {
         val body = ap.body
         if (item.arrivedAt == null) {
@@ -244,16 +265,26 @@ internal class MissionRunner(private val ap: SimAutopilot) {
             val arrived = if (ap.multirotor) {
                 d < radius && abs(body.location.altitude.meters - target.altitude.meters) < 1.0
             } else {
-                // A plane also counts a waypoint it is flying away from after a close pass.
-                d < radius || (d < 3 * radius && d > item.previousDistance)
+                // A plane also counts a waypoint whose finish line it has crossed: the line through the
+                // waypoint square to the leg (ArduPlane verify_nav_wp, Location::past_interval_finish_line).
+                d < radius || pastFinishLine(target)
             }
-            item.previousDistance = d
             if (!arrived) return Guidance.GoTo(target)
             item.arrivedAt = ap.time
             holdAt = target
         }
         val holdFor = if (ap.multirotor) it.param1.toDouble() else 0.0
         return if (ap.time - item.arrivedAt!! < holdFor) Guidance.Loiter(target, 0.0) else null
+    }
+
+    /** Whether the plane is past the line through [target] square to the leg from the previous waypoint. */
+    private fun pastFinishLine(target: Location): Boolean {
+        val from = item.legStart ?: (previousWaypoint() ?: ap.body.location).also { item.legStart = it }
+        val (ln, le) = northEast(from, target)
+        val length = kotlin.math.hypot(ln, le)
+        if (length < 1.0) return false
+        val (n, e) = northEast(from, ap.body.location)
+        return (n * ln + e * le) / length >= length
     }
 
     private fun radiusOf(it: MissionItem): Pair<Double, Boolean> {

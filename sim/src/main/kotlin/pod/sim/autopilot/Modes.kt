@@ -31,6 +31,7 @@ internal enum class Behaviour {
 
 /** Flight-mode semantics per autopilot flavour; names and numbers come from FlightModes. */
 internal object Modes {
+    private val planeNotArmable = setOf("RTL", "QRTL", "QLAND", "LOITER_ALT_QLAND")
     private val copterNotArmable = setOf("AUTO", "AUTO_RTL", "RTL", "SMART_RTL", "LAND", "CIRCLE", "FLIP", "AUTOTUNE", "AVOID_ADSB", "FOLLOW")
 
     /** The behaviour of mode [name], or null when the simulated airframe cannot fly it. */
@@ -76,6 +77,7 @@ internal object Modes {
     fun armable(autopilot: Autopilot, type: VehicleType, name: String, autoOptions: Int): Boolean = when {
         autopilot == Autopilot.PX4 -> name != "AUTO.RTL" && name != "AUTO.LAND"
         type.isMultirotor -> name !in copterNotArmable || (name == "AUTO" && autoOptions and 1 != 0)
-        else -> true
+        // ArduPlane's ModeRTL (and the QuadPlane returns and landings) refuse arming in _pre_arm_checks (ArduPlane/mode.h).
+        else -> name !in planeNotArmable
     }
 }

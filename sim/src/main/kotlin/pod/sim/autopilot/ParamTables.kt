@@ -69,6 +69,12 @@ internal object ParamTables {
         ParamDef("TECS_CLMB_MAX", 5.0, REAL32, 0.1, 20.0), // m/s
         ParamDef("TECS_SINK_MAX", 5.0, REAL32, 0.0, 20.0), // m/s
         ParamDef("LAND_DISARMDELAY", 20.0, INT8, 0.0, 127.0), // s
+        // 0 (the default, ArduPlane Parameters.cpp) refuses to arm a mission holding DO_LAND_START.
+        ParamDef("RTL_AUTOLAND", 0.0, INT8, 0.0, 3.0),
+        // Flare triggers of the slope landing (AP_Landing.cpp var_info defaults).
+        ParamDef("LAND_FLARE_ALT", 3.0, REAL32, 0.0, 30.0), // m
+        ParamDef("LAND_FLARE_SEC", 2.0, REAL32, 0.0, 10.0), // s
+        ParamDef("TECS_LAND_SINK", 0.25, REAL32, 0.0, 2.0), // m/s sink demanded in the flare
         ParamDef("FS_GCS_ENABL", 0.0, INT8, 0.0, 2.0),
         // Read-only (@ReadOnly in ArduPlane/Parameters.cpp, k_software_type 0).
         ParamDef("SYSID_SW_TYPE", 0.0, INT8, readOnly = true),

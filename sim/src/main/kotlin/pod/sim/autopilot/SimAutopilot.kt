@@ -6,6 +6,7 @@ import pod.core.vehicle.LandedState
 import pod.core.vehicle.VehicleType
 import pod.mavlink.mission.MissionMessage
 import pod.mavlink.mission.MissionServer
+import pod.mavlink.mission.MissionType
 import pod.mavlink.telemetry.FlightModes
 import pod.sim.PhotoEvent
 import pod.sim.SimState
@@ -99,6 +100,12 @@ internal class SimAutopilot(
     val reached = ArrayList<Int>()
     val photos = ArrayList<PhotoEvent>()
 
+    init {
+        // ArduPilot will not clear a mission it is flying: AP_Mission::clear refuses while armed and
+        // MISSION_RUNNING (in AUTO), and MissionItemProtocol::handle_mission_clear_all answers ERROR.
+        if (!isPx4) missionServer.clearAllowed = { type -> type != MissionType.MISSION || !(armed && modeName == "AUTO" && mission.running) }
+    }
+
     /**
      * True once the simulated GPS has a fix and the estimator has set its origin. ArduPilot has no
      * home before that: Copter::update_home_from_EKF (ArduCopter/commands.cpp) sets home to the
@@ -184,6 +191,7 @@ internal class SimAutopilot(
         // Setting home announces it (AP_AHRS::set_home has GCS send HOME_POSITION to every link).
         if (positionReady && !wasReady) emit(SimOutput.HomeChanged)
         charge = (if (armed) charge - dt / FULL_DRAIN_SECONDS else charge + dt / FULL_RECHARGE_SECONDS).coerceIn(0.0, 1.0)
+        missionChanged()
         val guidance = guidance()
         body = airframe.step(body, guidance, performance(), ground, armed, dt)
         afterStep()
@@ -256,6 +264,18 @@ internal class SimAutopilot(
         if (time >= at) {
             disarm()
             text(Severity.INFO, if (isPx4) "Disarmed by auto disarm" else "Disarming motors")
+        }
+    }
+
+    /**
+     * Reacts to the mission list as it is now; called every step and right after each mission
+     * message, since ArduPlane notices within one loop (ModeAuto::update, ArduPlane/mode_auto.cpp):
+     * a plane in AUTO with no mission to run switches to RTL.
+     */
+    fun missionChanged() {
+        if (!isPx4 && !multirotor && modeName == "AUTO" && !mission.hasMission()) {
+            setMode("RTL")
+            text(Severity.INFO, "Aircraft in auto without a running mission")
         }
     }
 

@@ -63,6 +63,12 @@ internal object FixedWingAirframe : Airframe {
                     sinkLimit = min(perf.descent, needed)
                 }
             }
+            is Guidance.Glide -> {
+                heading = guidance.heading
+                speed = min(cruise, perf.minAirspeed * 1.3)
+                targetAlt = guidance.altitude
+                sinkLimit = guidance.sinkLimit
+            }
             is Guidance.Cruise -> {
                 heading = guidance.heading
                 targetAlt = guidance.altitude

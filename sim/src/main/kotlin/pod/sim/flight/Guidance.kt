@@ -31,6 +31,12 @@ internal sealed interface Guidance {
      */
     data class Descend(val over: Location?, val rate: Double) : Guidance
 
+    /**
+     * A plane on a landing glide: fly [heading] at landing speed towards [altitude] (it may be below
+     * the ground), sinking no faster than [sinkLimit] m/s.
+     */
+    data class Glide(val heading: Double, val altitude: Double, val sinkLimit: Double) : Guidance
+
     /** Hold [heading] and [altitude] (a plane in a manual mode with nobody on the sticks). */
     data class Cruise(val heading: Double, val altitude: Double) : Guidance
 }

@@ -62,7 +62,7 @@ internal object MultirotorAirframe : Airframe {
                 climbLimit = 0.0
                 target = guidance.over?.let { approach(body, northEast(body.location, it), perf.cruise, perf) } ?: (0.0 to 0.0)
             }
-            is Guidance.Cruise -> Unit
+            is Guidance.Cruise, is Guidance.Glide -> Unit // a multirotor with nobody on the sticks holds position
         }
         if (body.onGround && targetAlt <= ground + 0.2) {
             return body.copy(velocityNorth = 0.0, velocityEast = 0.0, velocityDown = 0.0, airspeed = 0.0, throttle = if (armed) 5 else 0)

@@ -57,6 +57,7 @@ class MissionFlightTest : StringSpec({
 
     "an ArduPlane takes off, flies its waypoints, follows DO_LAND_START to NAV_LAND, lands at the land point and disarms" {
         val ap = autopilot(type = VehicleType.FIXED_WING)
+        ap.params.set("RTL_AUTOLAND", 2.0) // a mission holding DO_LAND_START arms only with RTL_AUTOLAND set
         ap.load(
             listOf(
                 homeItem(),
