@@ -29,26 +29,12 @@ import pod.sim.SimFlavor
 import pod.sim.SimPlatform
 import pod.sim.SimVehicle
 
-/** One simulated ArduPlane on a fresh platform at [timeScale]× speed; everything stops afterwards. */
-private suspend fun withPlane(timeScale: Double = 30.0, block: suspend CoroutineScope.(SimPlatform, PlatformVehicle, MavlinkVehicle, SimVehicle) -> Unit) = coroutineScope {
-    val fleet = SimPlatform.start(this, listOf(SimFlavor.ARDUPLANE), timeScale = timeScale)
-    try {
-        val v = fleet.vehicles.value.single()
-        block(fleet, v, fleet.platform.mavlink(v), fleet.simulated.single())
-    } finally {
-        fleet.close()
-    }
-}
-
-private fun Location.at(north: Int, east: Int, height: Double): Location =
-    offset(north.m, east.m).let { Location((it.latitude * 1e7).roundToLong() / 1e7, (it.longitude * 1e7).roundToLong() / 1e7, height.m) }
-
 /** ArduPlane behaviour that only shows when Pod's missions meet the real firmware's rules (issue 11). */
 class PlaneMissionSpec : StringSpec({
 
     "a plane mission ending in an unlimited loiter completes once the plane circles the loiter point, not on its way there" {
         // 10×: position reports close enough together to see where the plane was when the run completed.
-        withPlane(timeScale = 10.0) { fleet, v, vehicle, sim ->
+        withVehicle(SimFlavor.ARDUPLANE, timeScale = 10.0) { fleet, v, vehicle, sim ->
             val home = sim.config.home
             val center = home.at(800, 0, 50.0)
             // returnHomeAndLoiter's radius: the plane flies the tightest circle it can (~29 m in the simulator).
@@ -69,7 +55,7 @@ class PlaneMissionSpec : StringSpec({
     }
 
     "a plane left disarmed in AUTO by an earlier program arms and flies the next mission (clearing sends it to RTL, where it cannot arm)" {
-        withPlane { fleet, v, vehicle, sim ->
+        withVehicle(SimFlavor.ARDUPLANE, timeScale = 30.0) { fleet, v, vehicle, sim ->
             val home = sim.config.home
             val earlier = Mission("earlier", null, listOf(MissionStep.TakeOff(home.at(0, 0, 40.0), 15.deg), MissionStep.Waypoint(home.at(0, 600, 40.0))))
             vehicle.mission.upload(MissionPlanner.plan(earlier, MissionFlavor.ARDUPLANE, home).items)
@@ -86,7 +72,7 @@ class PlaneMissionSpec : StringSpec({
     }
 
     "replacing the mission of a plane flying its mission in AUTO holds it at height, replaces the mission and flies the new one" {
-        withPlane { fleet, v, vehicle, sim ->
+        withVehicle(SimFlavor.ARDUPLANE, timeScale = 30.0) { fleet, v, vehicle, sim ->
             val home = sim.config.home
             val first = Mission("first", null, listOf(MissionStep.TakeOff(home.at(0, 0, 40.0), 15.deg), MissionStep.Loiter(home.at(400, 0, 50.0), 80.m, LoiterDuration.Unlimited)))
             withTimeout(60.seconds) { fleet.fly(v, first) {} }
@@ -103,7 +89,7 @@ class PlaneMissionSpec : StringSpec({
     }
 
     "returnHomeAndLand on a plane (a waypoint over home, then land there) touches down near home, after a glide of a few degrees" {
-        withPlane { fleet, v, vehicle, sim ->
+        withVehicle(SimFlavor.ARDUPLANE, timeScale = 30.0) { fleet, v, vehicle, sim ->
             val home = sim.config.home
             val mission = Mission(
                 "home", null,
