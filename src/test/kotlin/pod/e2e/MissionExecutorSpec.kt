@@ -8,12 +8,9 @@ import io.kotest.matchers.doubles.shouldBeLessThan
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import kotlin.math.abs
-import kotlin.math.roundToLong
 import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.CompletableDeferred
-import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.cancelAndJoin
-import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.flow.map
@@ -28,7 +25,6 @@ import pod.core.mission.MissionStep
 import pod.core.mission.PrecisionLand
 import pod.core.mission.SpeedKind
 import pod.core.platform.MissionEvent
-import pod.core.platform.PlatformVehicle
 import pod.core.platform.SafeState
 import pod.core.units.Location
 import pod.core.units.deg
@@ -43,8 +39,6 @@ import pod.mavlink.plan.MissionFlavor
 import pod.mavlink.plan.MissionPlanner
 import pod.mavlink.plan.MissionReader
 import pod.sim.SimFlavor
-import pod.sim.SimPlatform
-import pod.sim.SimVehicle
 
 /** Takeoff, two waypoints, a loiter of one turn, and a landing back home. */
 private fun copterSurvey(home: Location) = Mission(

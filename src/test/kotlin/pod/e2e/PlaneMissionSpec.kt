@@ -7,27 +7,19 @@ import io.kotest.matchers.doubles.shouldBeLessThan
 import io.kotest.matchers.shouldBe
 import kotlin.math.abs
 import kotlin.math.hypot
-import kotlin.math.roundToLong
 import kotlin.time.Duration.Companion.seconds
-import kotlinx.coroutines.CoroutineScope
-import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withTimeout
 import pod.core.mission.LoiterDuration
 import pod.core.mission.Mission
 import pod.core.mission.MissionStep
 import pod.core.platform.MissionEvent
-import pod.core.platform.PlatformVehicle
-import pod.core.units.Location
 import pod.core.units.deg
 import pod.core.units.m
 import pod.core.vehicle.LandedState
-import pod.mavlink.MavlinkVehicle
 import pod.mavlink.plan.MissionFlavor
 import pod.mavlink.plan.MissionPlanner
 import pod.sim.SimFlavor
-import pod.sim.SimPlatform
-import pod.sim.SimVehicle
 
 /** ArduPlane behaviour that only shows when Pod's missions meet the real firmware's rules (issue 11). */
 class PlaneMissionSpec : StringSpec({
@@ -62,7 +54,9 @@ class PlaneMissionSpec : StringSpec({
             vehicle.action.setMode("AUTO")
             val texts = ArrayList<String>()
             val collecting = launch { sim.statusTexts.collect { texts += it } }
-            val next = Mission("next", null, listOf(MissionStep.TakeOff(home.at(0, 0, 40.0), 15.deg), MissionStep.Waypoint(home.at(500, 0, 50.0))))
+            // Far enough that the flight outlasts a few heartbeats at 30×: a mission flown between two
+            // heartbeats would never show AUTO to the start's confirmation.
+            val next = Mission("next", null, listOf(MissionStep.TakeOff(home.at(0, 0, 40.0), 15.deg), MissionStep.Waypoint(home.at(3000, 0, 50.0))))
             withTimeout(60.seconds) { fleet.fly(v, next) {} }
             collecting.cancel()
             texts shouldContain "Aircraft in auto without a running mission"
