@@ -1,6 +1,27 @@
 package pod.mavlink.mission
 
 import kotlin.math.abs
+import pod.mavlink.command.MavCommands.CONDITION_DELAY
+import pod.mavlink.command.MavCommands.CONDITION_YAW
+import pod.mavlink.command.MavCommands.DO_CHANGE_SPEED
+import pod.mavlink.command.MavCommands.DO_JUMP
+import pod.mavlink.command.MavCommands.DO_LAND_START
+import pod.mavlink.command.MavCommands.DO_SET_CAM_TRIGG_DIST
+import pod.mavlink.command.MavCommands.DO_SET_HOME
+import pod.mavlink.command.MavCommands.DO_SET_SERVO
+import pod.mavlink.command.MavCommands.NAV_CONTINUE_AND_CHANGE_ALT
+import pod.mavlink.command.MavCommands.NAV_DELAY
+import pod.mavlink.command.MavCommands.NAV_LAND
+import pod.mavlink.command.MavCommands.NAV_LOITER_TIME
+import pod.mavlink.command.MavCommands.NAV_LOITER_TO_ALT
+import pod.mavlink.command.MavCommands.NAV_LOITER_TURNS
+import pod.mavlink.command.MavCommands.NAV_LOITER_UNLIM
+import pod.mavlink.command.MavCommands.NAV_RETURN_TO_LAUNCH
+import pod.mavlink.command.MavCommands.NAV_SPLINE_WAYPOINT
+import pod.mavlink.command.MavCommands.NAV_TAKEOFF
+import pod.mavlink.command.MavCommands.NAV_VTOL_LAND
+import pod.mavlink.command.MavCommands.NAV_VTOL_TAKEOFF
+import pod.mavlink.command.MavCommands.NAV_WAYPOINT
 
 /**
  * What ArduPilot keeps of a mission item: it does not store MISSION_ITEM_INT as sent but packs
@@ -130,36 +151,16 @@ public object ArduPilotMissionStorage {
     /** Frames `mavlink_int_to_mission_cmd` accepts for a location (terrain ones when built with terrain, as SITL is). */
     private val ACCEPTED_FRAMES = setOf(0, 2, 3, 5, 6, 10, 11)
 
-    private const val NAV_WAYPOINT = 16
-    private const val NAV_LOITER_UNLIM = 17
-    private const val NAV_LOITER_TURNS = 18
-    private const val NAV_LOITER_TIME = 19
-    private const val NAV_RETURN_TO_LAUNCH = 20
-    private const val NAV_LAND = 21
-    private const val NAV_TAKEOFF = 22
-    private const val NAV_CONTINUE_AND_CHANGE_ALT = 30
-    private const val NAV_LOITER_TO_ALT = 31
-    private const val NAV_SPLINE_WAYPOINT = 82
-    private const val NAV_VTOL_TAKEOFF = 84
-    private const val NAV_VTOL_LAND = 85
+    // The commands AP_Mission stores that MavCommands does not name.
     private const val NAV_GUIDED_ENABLE = 92
-    private const val NAV_DELAY = 93
     private const val NAV_PAYLOAD_PLACE = 94
-    private const val CONDITION_DELAY = 112
     private const val CONDITION_DISTANCE = 114
-    private const val CONDITION_YAW = 115
-    private const val DO_JUMP = 177
-    private const val DO_CHANGE_SPEED = 178
-    private const val DO_SET_HOME = 179
     private const val DO_SET_RELAY = 181
     private const val DO_REPEAT_RELAY = 182
-    private const val DO_SET_SERVO = 183
     private const val DO_REPEAT_SERVO = 184
-    private const val DO_LAND_START = 189
     private const val DO_GO_AROUND = 191
     private const val DO_SET_ROI = 201
     private const val DO_MOUNT_CONTROL = 205
-    private const val DO_SET_CAM_TRIGG_DIST = 206
     private const val DO_FENCE_ENABLE = 207
     private const val DO_PARACHUTE = 208
     private const val DO_INVERTED_FLIGHT = 210

@@ -16,6 +16,7 @@ import io.dronefleet.mavlink.common.MissionRequestList
 import io.dronefleet.mavlink.common.MissionSetCurrent
 import io.dronefleet.mavlink.common.MissionWritePartialList
 import io.dronefleet.mavlink.util.EnumValue
+import pod.mavlink.command.MavCommands.DO_DIGICAM_CONTROL
 
 /** Translates [MissionMessage]s to io.dronefleet messages addressed to one system, and back. */
 public object MissionWire {
@@ -123,8 +124,8 @@ public object MissionWire {
 
     private fun fromWire(value: Int, frame: Int, command: Int): Float = value / scale(frame, command)
 
+    /** MAV_CMD_DO_DIGICAM_CONFIGURE, which MavCommands does not name. */
     private const val DO_DIGICAM_CONFIGURE = 202
-    private const val DO_DIGICAM_CONTROL = 203
 
     private fun type(type: MissionType): EnumValue<MavMissionType> = EnumValue.create(type.mavValue)
 
