@@ -92,7 +92,7 @@ public class MissionService internal constructor(
     private suspend fun write(type: MissionType, items: List<MissionItem>, partialFrom: Int?, onProgress: (TransferProgress) -> Unit) {
         exclusive.withLock {
             val outcome = try {
-                untilServiceUp(type) {
+                untilServiceUp {
                     val machine = MissionUpload(type, items, timing, roundTrip(), partialFrom)
                     drive(type, cancellable = true, { machine.start() }, machine::onMessage, machine::onTimeout) {
                         onProgress(machine.progress)
@@ -114,17 +114,23 @@ public class MissionService internal constructor(
     /**
      * Runs [attempt] again while the vehicle refuses it with MAV_MISSION_NO_SPACE within
      * [TransferTiming.serviceStartup] of its appearance: a vehicle just booted (ArduPilot) has not
-     * started its mission storage yet. Pauses [SERVICE_RETRY_PAUSE] between attempts; after the
-     * window the refusal stands.
+     * started its mission storage yet. After the window the refusal stands.
      */
-    private suspend fun <T> untilServiceUp(type: MissionType, attempt: suspend () -> T): T {
+    private suspend fun <T> untilServiceUp(attempt: suspend () -> T): T =
+        retryingRefusal(MissionResult.NO_SPACE, { timing.serviceStartup - appeared.elapsedNow() }, attempt)
+
+    /**
+     * Runs [attempt] again, pausing [SERVICE_RETRY_PAUSE] between tries, while the vehicle refuses
+     * it with [result] and [left] (read after each refusal) is still positive.
+     */
+    private suspend fun <T> retryingRefusal(result: MissionResult, left: () -> Duration, attempt: suspend () -> T): T {
         while (true) {
             try {
                 return attempt()
             } catch (e: MissionRejected) {
-                val left = timing.serviceStartup - appeared.elapsedNow()
-                if (e.result != MissionResult.NO_SPACE || left <= Duration.ZERO) throw e
-                delay(minOf(SERVICE_RETRY_PAUSE, left))
+                val remaining = left()
+                if (e.result != result || remaining <= Duration.ZERO) throw e
+                delay(minOf(SERVICE_RETRY_PAUSE, remaining))
             }
         }
     }
@@ -142,18 +148,8 @@ public class MissionService internal constructor(
      * upload of [type] that this service cancelled: ArduPilot ignores the cancelling MISSION_ACK
      * and holds the abandoned upload until its own timeout (8 s), refusing downloads meanwhile.
      */
-    private suspend fun <T> afterOwnCancel(type: MissionType, attempt: suspend () -> T): T {
-        while (true) {
-            try {
-                return attempt()
-            } catch (e: MissionRejected) {
-                val cancelled = cancelledUploads[type]
-                val left = if (cancelled == null) Duration.ZERO else ABANDONED_UPLOAD_HOLD - cancelled.elapsedNow()
-                if (e.result != MissionResult.DENIED || left <= Duration.ZERO) throw e
-                delay(minOf(SERVICE_RETRY_PAUSE, left))
-            }
-        }
-    }
+    private suspend fun <T> afterOwnCancel(type: MissionType, attempt: suspend () -> T): T =
+        retryingRefusal(MissionResult.DENIED, { cancelledUploads[type]?.let { ABANDONED_UPLOAD_HOLD - it.elapsedNow() } ?: Duration.ZERO }, attempt)
 
     /** [download] as a flow of progress; the list itself comes from [download]. */
     public fun downloading(type: MissionType = MissionType.MISSION): Flow<TransferProgress> =
@@ -250,8 +246,9 @@ public class MissionService internal constructor(
             } catch (e: CancellationException) {
                 if (cancellable) {
                     // Tell the vehicle, or it refuses the next transfer (DENIED) until its own timeout:
-                    // ArduPilot's MissionItemProtocol and PX4's MavlinkMissionManager drop the
-                    // transfer on MISSION_ACK. Bounded, so a stuck socket cannot hold up the cancel.
+                    // PX4's MavlinkMissionManager (and MAVSDK) drop the transfer on this MISSION_ACK;
+                    // ArduPilot ignores it (see afterOwnCancel). Bounded, so a stuck socket cannot
+                    // hold up the cancel.
                     withContext(NonCancellable) {
                         withTimeoutOrNull(CANCEL_SEND_LIMIT) {
                             vehicle.send(MissionWire.encode(MissionMessage.Ack(type, MissionResult.OPERATION_CANCELLED), identity.systemId, identity.componentId))
