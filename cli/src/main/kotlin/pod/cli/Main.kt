@@ -24,11 +24,29 @@ class Pod(out: Output = Output { println(it) }) : CliktCommand(name = "pod") {
     override fun run() = Unit
 }
 
-/** Runs [block], turning link errors into a one-line message and exit code 2. */
+/** The exit codes of every `pod` command (the README's "Exit codes" lists them). */
+internal object Exit {
+    /** Done as asked. */
+    const val DONE = 0
+
+    /** The vehicle refused or failed (a command denied, a transfer that did not complete, a lost vehicle). */
+    const val FAILED = 1
+
+    /** Bad usage or input: an unknown option, a malformed argument or file, a link address that cannot be opened. */
+    const val USAGE = 2
+
+    /** Stopped by Ctrl-C or SIGTERM ([Interruption.EXIT_CODE]). */
+    const val INTERRUPTED = Interruption.EXIT_CODE
+}
+
+/** Ends the command with a one-line message naming the bad input and [Exit.USAGE]. */
+internal fun badInput(message: String): Nothing = throw CliktError("error: $message", statusCode = Exit.USAGE)
+
+/** Runs [block], turning link errors into a one-line message and [Exit.USAGE]. */
 internal inline fun <T> reportingLinkErrors(block: () -> T): T = try {
     block()
 } catch (e: LinkException) {
-    throw CliktError("error: ${e.message}", statusCode = 2)
+    throw CliktError("error: ${e.message}", statusCode = Exit.USAGE)
 }
 
 fun main(args: Array<String>) {

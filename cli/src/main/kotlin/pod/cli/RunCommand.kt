@@ -38,7 +38,7 @@ internal class RunCommand : CliktCommand(name = "run") {
 
     override fun run() {
         val file = File(script)
-        if (!file.isFile) throw CliktError("error: no such script: $script", statusCode = 2)
+        if (!file.isFile) badInput("no such script: $script")
         val choice = fleetChoice()
         val outcome = try {
             withSystemProperties(choice.toSystemProperties()) {

@@ -123,7 +123,7 @@ internal abstract class VehicleCommandBase(protected val out: Output, name: Stri
 
     protected fun fail(message: String): Nothing {
         if (json) out.line(jsonLine("event" to "error", "message" to message))
-        throw CliktError("error: $message", statusCode = 1)
+        throw CliktError("error: $message", statusCode = Exit.FAILED)
     }
 
     /** The closing line: [text] for people, a `done` JSON object with [json] fields for scripts. */
