@@ -11,19 +11,22 @@ public sealed class LinkAddress {
     /** Port number, 0..65535 (0 binds an ephemeral port for [UdpIn]). */
     public abstract val port: Int
 
+    /** `host:port` as a connection string writes it: an IPv6 host in brackets (`[::1]:14551`). */
+    public val hostAndPort: String get() = if (':' in host) "[$host]:$port" else "$host:$port"
+
     /** Listen on a local UDP port; vehicles' addresses are learnt from their datagrams. */
     public data class UdpIn(override val host: String, override val port: Int) : LinkAddress() {
-        override fun toString(): String = "udpin://$host:$port"
+        override fun toString(): String = "udpin://$hostAndPort"
     }
 
     /** Send to a remote UDP port (and receive its replies on an ephemeral local port). */
     public data class UdpOut(override val host: String, override val port: Int) : LinkAddress() {
-        override fun toString(): String = "udpout://$host:$port"
+        override fun toString(): String = "udpout://$hostAndPort"
     }
 
     /** Connect to a TCP server (SITL's serial-over-TCP, a MAVLink router). */
     public data class Tcp(override val host: String, override val port: Int) : LinkAddress() {
-        override fun toString(): String = "tcp://$host:$port"
+        override fun toString(): String = "tcp://$hostAndPort"
     }
 
     public companion object {

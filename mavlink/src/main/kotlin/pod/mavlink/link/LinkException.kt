@@ -16,7 +16,7 @@ public class PortInUse(
     /** The address we tried to bind. */
     public val address: LinkAddress,
     cause: Throwable? = null,
-) : LinkException("cannot listen on ${address.host}:${address.port}: the port is already in use", cause)
+) : LinkException("cannot listen on ${address.hostAndPort}: the port is already in use", cause)
 
 /** A host name that does not resolve, or a remote that refuses or cannot be reached. */
 public class HostUnreachable(
@@ -25,4 +25,4 @@ public class HostUnreachable(
     /** What the operating system said. */
     public val reason: String,
     cause: Throwable? = null,
-) : LinkException("cannot reach ${address.host}:${address.port}: $reason", cause)
+) : LinkException("cannot reach ${address.hostAndPort}: $reason", cause)

@@ -36,11 +36,11 @@ internal class TcpLink private constructor(
                 input.readAvailable(buffer, 0, buffer.size)
             } catch (e: IOException) {
                 if (closed) return
-                throw LinkException("tcp link to ${address.host}:${address.port} broke: ${e.message}", e)
+                throw LinkException("tcp link to ${address.hostAndPort} broke: ${e.message}", e)
             }
             if (n < 0) {
                 if (closed) return
-                throw LinkException("tcp link to ${address.host}:${address.port} was closed by the remote")
+                throw LinkException("tcp link to ${address.hostAndPort} was closed by the remote")
             }
             if (n > 0) onBytes(remote, buffer.copyOf(n))
         }
@@ -53,7 +53,7 @@ internal class TcpLink private constructor(
                 output.writeFully(bytes)
                 output.flush()
             } catch (e: IOException) {
-                if (!closed) throw LinkException("tcp link to ${address.host}:${address.port} broke: ${e.message}", e)
+                if (!closed) throw LinkException("tcp link to ${address.hostAndPort} broke: ${e.message}", e)
             }
         }
     }

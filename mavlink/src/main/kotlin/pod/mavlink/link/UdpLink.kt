@@ -80,7 +80,7 @@ internal class UdpLink private constructor(
                 }
             } catch (e: BindException) {
                 if (e.message.orEmpty().contains("in use", ignoreCase = true)) throw PortInUse(address, e)
-                throw LinkException("cannot listen on ${address.host}:${address.port}: ${e.message}", e)
+                throw LinkException("cannot listen on ${address.hostAndPort}: ${e.message}", e)
             } catch (e: java.nio.channels.UnresolvedAddressException) {
                 throw HostUnreachable(address, "unknown host '${address.host}'", e)
             }

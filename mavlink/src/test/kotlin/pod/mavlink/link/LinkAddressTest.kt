@@ -33,5 +33,13 @@ class LinkAddressTest : StringSpec({
             error.text shouldBe text
         }
     }
-})
 
+    "an IPv6 address prints in brackets and reads back as the same address" {
+        val address = LinkAddress.parse("udpin://[::1]:14551")
+        address.toString() shouldBe "udpin://[::1]:14551"
+        PortInUse(address).message!! shouldContain "cannot listen on [::1]:14551"
+        LinkAddress.parse(address.toString()) shouldBe address
+        LinkAddress.parse("tcp:[fe80::1]:5760").toString() shouldBe "tcp://[fe80::1]:5760"
+        LinkAddress.parse("udpout:127.0.0.1:14550").toString() shouldBe "udpout://127.0.0.1:14550"
+    }
+})
