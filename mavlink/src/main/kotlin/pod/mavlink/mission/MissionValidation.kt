@@ -1,13 +1,28 @@
 package pod.mavlink.mission
 
-/** Checks a list before it is uploaded, so the vehicle is never sent what it must refuse. */
-internal object MissionValidation {
+/**
+ * Checks a list before it is uploaded, so the vehicle is never sent what it must refuse.
+ * [MissionService] runs it on every upload; a caller with a file to send runs it first to refuse
+ * the file before any link is opened.
+ */
+public object MissionValidation {
+    /**
+     * The most items one list holds: MISSION_COUNT's count is a uint16, so seq runs 0..65534.
+     * [WplFile] reads no more than this.
+     */
+    public const val MAX_ITEMS: Int = 65_535
+
     private val fenceCommands = setOf(5000, 5001, 5002, 5003, 5004)
     private const val RALLY_POINT = 5100
 
-    /** Throws [InvalidMission] naming the first item that cannot be sent as a [type] list. */
-    fun check(type: MissionType, items: List<MissionItem>, first: Int = 0) {
-        require(items.size <= 65535) { "at most 65535 items fit a MISSION_COUNT, was ${items.size}" }
+    /**
+     * Throws [InvalidMission] naming the first item that cannot be sent as a [type] list ([first]:
+     * the seq of the first of [items], for a partial write).
+     */
+    public fun check(type: MissionType, items: List<MissionItem>, first: Int = 0) {
+        if (first + items.size > MAX_ITEMS) {
+            throw InvalidMission(type, MAX_ITEMS, "at most $MAX_ITEMS items fit a MISSION_COUNT, the list has ${first + items.size}")
+        }
         var currents = 0
         items.forEachIndexed { index, item ->
             fun fail(reason: String): Nothing = throw InvalidMission(type, first + index, reason)

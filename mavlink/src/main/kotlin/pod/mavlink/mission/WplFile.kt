@@ -43,7 +43,8 @@ public object WplFile {
     // [special]); Java's hex floats and 1f/1d suffixes, and Python's 1_000, are refused.
     private val decimal = Regex("[+-]?(\\d+(\\.\\d*)?|\\.\\d+)([eE][+-]?\\d+)?")
     private val whitespace = Regex("\\s+")
-    private const val MAX_ITEMS = 65_536 // seq is a uint16 on the wire
+    // What one MISSION_COUNT can announce: a longer file could be read but never uploaded.
+    private const val MAX_ITEMS = MissionValidation.MAX_ITEMS
 
     /**
      * The WPL text of [items]: the header, then one `\n`-terminated line per item.
@@ -100,7 +101,7 @@ public object WplFile {
             val fields = content.split(whitespace)
             if (!headerSeen) {
                 if (fields !in acceptedHeaders) {
-                    throw WplFormatException(lineNumber, "expected the header '$HEADER', found '$content'")
+                    throw WplFormatException(lineNumber, "expected the header '$HEADER', found '${shown(content)}'")
                 }
                 headerSeen = true
             } else {
@@ -201,6 +202,12 @@ public object WplFile {
         if (units <= BigDecimal.valueOf(range.first.toLong()).subtract(HALF)) return null
         if (units >= BigDecimal.valueOf(range.last.toLong()).add(HALF)) return null
         return units.setScale(0, RoundingMode.HALF_UP).intValueExact()
+    }
+
+    // A binary or foreign file's first line can be long and full of control characters: show a readable start.
+    private fun shown(line: String): String {
+        val printable = line.map { if (it.isISOControl() && it != '\t') '?' else it }.joinToString("")
+        return if (printable.length > 60) printable.take(60) + "…" else printable
     }
 
     /** NaN or ±infinity in the spellings Python's float() accepts, or null for anything else. */

@@ -187,6 +187,26 @@ internal class WplFileTest : FunSpec({
         }
     }
 
+    test("the reader and the upload check agree: 65535 items fit a MISSION_COUNT, 65536 are refused by the reader") {
+        val most = buildString {
+            append("QGC WPL 110\n")
+            repeat(MissionValidation.MAX_ITEMS) { append("0\t0\t3\t16\t0\t0\t0\t0\t41.1\t-8.6\t30\t1\n") }
+        }
+        val items = WplFile.read(most)
+        items.size shouldBe 65_535
+        MissionValidation.check(MissionType.MISSION, items) // what an upload would check first: no throw
+        val e = shouldThrow<WplFormatException> { WplFile.read(most + "0\t0\t3\t16\t0\t0\t0\t0\t41.1\t-8.6\t30\t1\n") }
+        e.lineNumber shouldBe 65_537
+        e.reason shouldBe "a list holds at most 65535 items"
+        shouldThrow<InvalidMission> { MissionValidation.check(MissionType.MISSION, items + items.last().copy(seq = 65_535)) }.message shouldBe
+            "invalid mission item 65535: at most 65535 items fit a MISSION_COUNT, the list has 65536"
+    }
+
+    test("a binary first line is shown short and readable in the header error") {
+        val e = shouldThrow<WplFormatException> { WplFile.read("\u0001ELF\u0002" + "x".repeat(100) + "\n") }
+        e.reason shouldBe "expected the header 'QGC WPL 110', found '?ELF?${"x".repeat(55)}…'"
+    }
+
     test("the line number counts comments and blank lines") {
         val e = shouldThrow<WplFormatException> {
             WplFile.read("# a\r\nQGC WPL 110\r\n\r\n$LINE\r\n# b\r\n${LINE.replace("\t3\t16\t", "\t3\tx\t")}\r\n")
