@@ -57,7 +57,7 @@ public class ParamService internal constructor(
     }
 
     private fun checkName(name: String) {
-        require(name.isNotEmpty() && name.length <= 16) { "a parameter name has 1..16 characters, was \"$name\"" }
+        Parameter.nameProblem(name)?.let { throw IllegalArgumentException(it) }
     }
 
     private fun roundTrip(): CommandRoundTrip {

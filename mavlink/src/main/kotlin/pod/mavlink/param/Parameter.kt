@@ -82,4 +82,20 @@ public data class Parameter(
     public val index: Int,
     /** How many parameters the vehicle has. */
     public val count: Int,
-)
+) {
+    public companion object {
+        /** The most characters a name has: PARAM_SET and PARAM_VALUE carry it in a char[16]. */
+        public const val MAX_NAME_LENGTH: Int = 16
+
+        /**
+         * Why [name] cannot travel as a parameter name (empty, longer than [MAX_NAME_LENGTH], not
+         * printable ASCII), or null when it can. Checked before anything is sent.
+         */
+        public fun nameProblem(name: String): String? = when {
+            name.isEmpty() -> "a parameter name cannot be empty"
+            name.length > MAX_NAME_LENGTH -> "a parameter name has at most $MAX_NAME_LENGTH characters, \"$name\" has ${name.length}"
+            name.any { it !in ' '..'~' } -> "a parameter name is plain ASCII letters, digits and '_', was \"$name\""
+            else -> null
+        }
+    }
+}
