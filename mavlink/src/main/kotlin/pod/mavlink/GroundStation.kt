@@ -63,6 +63,7 @@ public class GroundStation private constructor(
     private val _stats = MutableStateFlow(LinkStats())
     private val _linkError = MutableStateFlow<LinkException?>(null)
     @Volatile private var unrouted = 0L
+    @Volatile private var fromSystemZero = 0L
     @Volatile private var handlerErrors = 0L
     @Volatile private var trackingErrors = 0L
     private val streamRequests = StreamRequests(scope, config)
@@ -166,6 +167,12 @@ public class GroundStation private constructor(
 
     private fun route(peer: LinkPeer, frame: MavFrame) {
         if (frame.systemId == config.systemId && frame.componentId == config.componentId) return
+        // System id 0 is MAVLink's broadcast address, never a sender's own id ("0 is not a valid
+        // vehicle ID", mavlink.io FAQ and serialization guide): such frames are counted, not made a vehicle.
+        if (frame.systemId == 0) {
+            fromSystemZero++
+            return
+        }
         val message = codec.decode(frame)
         var vehicle = _vehicles.value[frame.systemId]
         if (message is Heartbeat) {
@@ -215,7 +222,7 @@ public class GroundStation private constructor(
 
     private fun publishStats() {
         val t = decoders.totals()
-        _stats.value = LinkStats(t.frames, t.badCrc, t.skippedBytes, t.unknownMessages, unrouted, handlerErrors, t.evictions, trackingErrors)
+        _stats.value = LinkStats(t.frames, t.badCrc, t.skippedBytes, t.unknownMessages, unrouted, handlerErrors, t.evictions, trackingErrors, fromSystemZero)
     }
 
     private fun gcsHeartbeat(): Heartbeat = Heartbeat.builder()
@@ -269,4 +276,6 @@ public data class LinkStats(
     public val evictedPeers: Long = 0,
     /** Passes of the connection-tracking loop that failed and were skipped (the loop goes on). */
     public val trackingErrors: Long = 0,
+    /** Frames whose sender claimed system id 0, the broadcast address (not routed, never a vehicle). */
+    public val fromSystemZero: Long = 0,
 )

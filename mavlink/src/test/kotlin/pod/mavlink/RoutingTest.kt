@@ -87,4 +87,24 @@ class RoutingTest : StringSpec({
             }
         }
     }
+
+    "a heartbeat from system id 0, the broadcast address, is counted in the link stats and never becomes a vehicle" {
+        coroutineScope {
+            val gcs = GroundStation.open("udpin://127.0.0.1:0", this)
+            RawVehicle(0, gcs.link.localPort).use { zero ->
+                RawVehicle(7, gcs.link.localPort).use { seven ->
+                    try {
+                        zero.heartbeat()
+                        withTimeout(5.seconds) { gcs.stats.first { it.fromSystemZero >= 1 } }
+                        // A real vehicle heard after it shows the link works and routes as before.
+                        seven.heartbeat()
+                        withTimeout(5.seconds) { gcs.vehicles.first { 7 in it } }
+                        gcs.vehicles.value.keys shouldBe setOf(7)
+                    } finally {
+                        gcs.close()
+                    }
+                }
+            }
+        }
+    }
 })
