@@ -56,13 +56,44 @@ public enum class LandedState {
 
 /** GPS receiver state. */
 public data class GpsStatus(
-    /** Fix type as MAVLink's GPS_FIX_TYPE number (0 none … 3 3D, 4 DGPS, 5 RTK float, 6 RTK fixed). */
+    /** Fix type as MAVLink's GPS_FIX_TYPE number (0 none … 3 3D, 4 DGPS, 5 RTK float, 6 RTK fixed), as sent. */
     public val fixType: Int,
     /** Satellites used, or null when unknown. */
     public val satellites: Int?,
 ) {
+    /** [fixType] by name, or null for a number GPS_FIX_TYPE does not define (a receiver sending 255). */
+    public val fix: GpsFix? get() = GpsFix.of(fixType)
+
     /** True for a 3D fix or better. */
-    public val has3dFix: Boolean get() = fixType >= 3
+    public val has3dFix: Boolean get() = fix?.let { it >= GpsFix.FIX_3D } ?: false
+}
+
+/** MAVLink's GPS_FIX_TYPE, in its order (the ordinal is the number on the wire). */
+public enum class GpsFix {
+    /** No GPS connected. */
+    NO_GPS,
+    /** No position information. */
+    NO_FIX,
+    /** 2D position. */
+    FIX_2D,
+    /** 3D position. */
+    FIX_3D,
+    /** DGPS/SBAS-aided 3D position. */
+    DGPS,
+    /** RTK float, 3D position. */
+    RTK_FLOAT,
+    /** RTK fixed, 3D position. */
+    RTK_FIXED,
+    /** Static fixed, typically a base station. */
+    STATIC,
+    /** PPP, 3D position. */
+    PPP,
+    ;
+
+    public companion object {
+        /** The fix type numbered [value], or null when GPS_FIX_TYPE has none. */
+        public fun of(value: Int): GpsFix? = entries.getOrNull(value)
+    }
 }
 
 /** How well a vehicle's messages reach us, counted from MAVLink sequence numbers. */
