@@ -13,7 +13,7 @@ class EventLines(private val names: (Int) -> String) {
             is EngineEvent.TaskCompleted -> if (event.label.contains(" on [")) "done   ${event.label}" else null
             is EngineEvent.TaskFailed -> "FAILED ${event.label}: ${event.error.message}"
             is EngineEvent.TaskCancelled -> if (event.label.contains(" on [")) "cancel ${event.label}" else null
-            is EngineEvent.Flying -> "${names(event.vehicle)} flies '${event.mission.name}' (${event.mission.steps.size} steps)"
+            is EngineEvent.Flying -> "${names(event.vehicle)} flies '${event.mission.name}' (${steps(event.mission.steps.size)})"
             is EngineEvent.Mission -> mission(names(event.vehicle), event.event)
             is EngineEvent.MadeSafe -> "${names(event.vehicle)} made safe: ${event.state}${if (event.confirmed) "" else " (not confirmed)"}"
             is EngineEvent.Picked -> "picked ${event.vehicles.joinToString { names(it) }}"
@@ -24,7 +24,7 @@ class EventLines(private val names: (Int) -> String) {
     }
 
     private fun mission(name: String, event: MissionEvent): String? = when (event) {
-        is MissionEvent.Uploaded -> "$name mission on board (${event.steps} steps)"
+        is MissionEvent.Uploaded -> "$name mission on board (${steps(event.steps)})"
         MissionEvent.Started -> "$name started"
         is MissionEvent.StepStarted -> null
         is MissionEvent.StepDone -> "$name step ${event.step + 1} done"
@@ -32,6 +32,9 @@ class EventLines(private val names: (Int) -> String) {
     }
 
     companion object {
+        /** "1 step", "4 steps". */
+        fun steps(count: Int): String = if (count == 1) "1 step" else "$count steps"
+
         /** mm:ss of vehicle time. */
         fun clock(at: Duration): String {
             val s = at.inWholeSeconds
