@@ -2,6 +2,7 @@ package pod.sim
 
 import kotlinx.coroutines.CoroutineScope
 import pod.core.units.m
+import pod.mavlink.link.LinkAddress
 
 /**
  * Several [SimVehicle]s with distinct system ids, parked in a row east of [base]'s home so their
@@ -25,6 +26,9 @@ public class SimFleet private constructor(
         /**
          * Starts [count] vehicles in [scope]: system ids from [firstSystemId], each a copy of [base]
          * with its home [spacing] metres east of the previous one.
+         *
+         * When [base] listens (`udpin://host:port`, port not 0), vehicle i listens on port + i, as
+         * SITL's instances each take their own port: one port cannot be bound twice.
          */
         public suspend fun start(
             count: Int,
@@ -37,10 +41,15 @@ public class SimFleet private constructor(
             require(firstSystemId in 1..254 && firstSystemId + count - 1 <= 254) {
                 "system ids $firstSystemId..${firstSystemId + count - 1} must lie within 1..254"
             }
+            val listen = LinkAddress.parse(base.gcs) as? LinkAddress.UdpIn
+            if (listen != null && listen.port != 0) {
+                require(listen.port + count - 1 <= 65535) { "ports ${listen.port}..${listen.port + count - 1} for $count listening vehicles go past 65535" }
+            }
             val vehicles = (0 until count).map { i ->
                 SimVehicle(
                     base.copy(
                         systemId = firstSystemId + i,
+                        gcs = if (listen != null && listen.port != 0) listen.copy(port = listen.port + i).toString() else base.gcs,
                         home = base.home.offset(north = 0.m, east = (spacing * i).m),
                     ),
                 )
