@@ -85,7 +85,16 @@ internal class ModeCommand(out: Output) : ActionCommand(out, "mode", "Switch fli
 }
 
 internal class TakeoffCommand(out: Output) : ActionCommand(out, "takeoff", "Take off to ALT metres above home and wait until it is reached (arm first).") {
-    private val altitude by argument("ALT", help = "metres above home").convert { it.toDoubleOrNull()?.takeIf { a -> a > 0 && a <= 10_000 } ?: fail("ALT must be a number in (0, 10000], was $it") }
+    init {
+        // `pod takeoff -5` is a wrong altitude, said once, not an unknown option plus a missing ALT.
+        negativeNumbersAsArguments()
+    }
+
+    private val altitude by argument("ALT", help = "metres above home, above 0 and at most 10000").convert {
+        val a = it.toDoubleOrNull() ?: fail("not a number of metres: '$it'")
+        if (!(a > 0 && a <= 10_000)) fail("the altitude must be above 0 m and at most 10000 m, was $it")
+        a
+    }
     override suspend fun perform(vehicle: MavlinkVehicle) = vehicle.action.takeoff(altitude.m).let { "at ${altitude} m" }
 }
 
@@ -112,8 +121,10 @@ internal class RtlCommand(out: Output) : ActionCommand(out, "rtl", "Return to la
 }
 
 internal class GotoCommand(out: Output) : ActionCommand(out, "goto", "Fly to LAT LON at ALT metres above home and hold there.") {
-    // A western longitude or southern latitude ("-8.59") is a number here, not an unknown option.
-    override val treatUnknownOptionsAsArgs: Boolean = true
+    init {
+        // A western longitude or southern latitude ("-8.59") is a number here, not an unknown option.
+        negativeNumbersAsArguments()
+    }
 
     private val lat by argument("LAT").double().restrictTo(-90.0..90.0)
     private val lon by argument("LON").double().restrictTo(-180.0..180.0)

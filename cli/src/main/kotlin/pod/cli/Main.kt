@@ -3,10 +3,12 @@ package pod.cli
 import com.github.ajalt.clikt.core.CliktCommand
 import com.github.ajalt.clikt.core.CliktError
 import com.github.ajalt.clikt.core.Context
-import com.github.ajalt.clikt.core.main
+import com.github.ajalt.clikt.core.parse
 import com.github.ajalt.clikt.core.subcommands
+import com.github.ajalt.clikt.output.MordantHelpFormatter
 import pod.launch.Interruption
 import pod.mavlink.link.LinkException
+import kotlin.system.exitProcess
 
 /** Where a command writes its lines; tests pass their own to read what a person would see. */
 fun interface Output {
@@ -16,6 +18,8 @@ fun interface Output {
 /** The `pod` command. */
 class Pod(out: Output = Output { println(it) }) : CliktCommand(name = "pod") {
     init {
+        // Every option's help says its default; subcommands inherit the formatter from this context.
+        configureContext { helpFormatter = { MordantHelpFormatter(it, showDefaultValues = true) } }
         subcommands(listOf(SimCommand(out), WatchCommand(out), DemoCommand(out), RunCommand(), MissionGroup(out), ParamGroup(out)) + actionCommands(out))
     }
 
@@ -49,7 +53,39 @@ internal inline fun <T> reportingLinkErrors(block: () -> T): T = try {
     throw CliktError("error: ${e.message}", statusCode = Exit.USAGE)
 }
 
+/**
+ * Runs `pod` with [args] in this JVM as [main] does, without ending the process: help and results
+ * go to [out], errors to [err] as one line each, and the exit code is returned ([Exit]). Nothing
+ * escapes as an exception: a failure Pod did not foresee is one line and [Exit.FAILED], with the
+ * stack trace only when [debug] (`POD_DEBUG=1`).
+ */
+fun run(
+    args: List<String>,
+    out: Output = Output { println(it) },
+    err: Output = Output { System.err.println(it) },
+    debug: Boolean = System.getenv("POD_DEBUG") == "1",
+): Int {
+    return try {
+        val pod = Pod(out)
+        try {
+            pod.parse(args)
+            Exit.DONE
+        } catch (e: CliktError) {
+            ExitReport.of(pod, e, out, err)
+        }
+    } catch (e: Throwable) {
+        ExitReport.internalError(e, err, debug)
+    }
+}
+
 fun main(args: Array<String>) {
     Interruption.install({ System.err.println(it) })
-    Pod().main(args)
+    exitProcess(run(args.toList()))
 }
+
+/**
+ * Lets this command read `-1` or `-8.59` as an argument. Clikt reads a token as a short option
+ * when some option of the command has a one-dash name, and only `-h` has one in Pod; with help
+ * as `--help` alone such tokens go to the arguments, while an unknown `--option` is still refused.
+ */
+internal fun CliktCommand.negativeNumbersAsArguments() = configureContext { helpOptionNames = setOf("--help") }

@@ -3,7 +3,11 @@ package pod.cli
 import com.github.ajalt.clikt.core.CliktCommand
 import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.core.subcommands
+import com.github.ajalt.clikt.parameters.arguments.ProcessedArgument
+import com.github.ajalt.clikt.parameters.arguments.RawArgument
 import com.github.ajalt.clikt.parameters.arguments.argument
+import com.github.ajalt.clikt.parameters.arguments.check
+import com.github.ajalt.clikt.parameters.arguments.convert
 import com.github.ajalt.clikt.parameters.types.double
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.param.Parameter
@@ -21,9 +25,13 @@ internal class ParamGroup(out: Output) : CliktCommand(name = "param") {
 
 private fun Parameter.text() = "$name = ${if (type.isInteger) value.toLong().toString() else value.toString()} (${type.name})"
 
+/** A parameter name, refused before the link opens when MAVLink could not carry it. */
+private fun RawArgument.parameterName(): ProcessedArgument<String, String> =
+    convert { name -> Parameter.nameProblem(name)?.let { fail(it) } ?: name }
+
 /** `pod param get NAME`. */
 internal class ParamGet(out: Output) : VehicleCommandBase(out, "get") {
-    private val name by argument(help = "parameter name, e.g. WPNAV_SPEED")
+    private val name by argument(help = "parameter name, e.g. WPNAV_SPEED").parameterName()
 
     override fun help(context: Context): String = "Read one parameter."
 
@@ -35,8 +43,12 @@ internal class ParamGet(out: Output) : VehicleCommandBase(out, "get") {
 
 /** `pod param set NAME VALUE`. */
 internal class ParamSet(out: Output) : VehicleCommandBase(out, "set") {
-    private val name by argument(help = "parameter name")
-    private val value by argument(help = "new value").double()
+    init {
+        negativeNumbersAsArguments()
+    }
+
+    private val name by argument(help = "parameter name").parameterName()
+    private val value by argument(help = "new value (negative ones too: -1)").double().check({ "VALUE must be a finite number, was $it" }) { it.isFinite() }
 
     override fun help(context: Context): String = "Write one parameter and print it as the vehicle then reports it."
 
