@@ -58,6 +58,20 @@ class MissionCliSpec : StringSpec({
 
                 withContext(Dispatchers.IO) { Pod(Lines()).parse(listOf("mission", "clear") + connect) }
                 sim.missionServer.list(MissionType.MISSION).shouldBeEmpty()
+
+                // A header-only file clears the list only when asked to, and then says it cleared.
+                withContext(Dispatchers.IO) { Pod(Lines()).parse(listOf("mission", "upload", upload.toString()) + connect) }
+                val empty = dir.resolve("empty.waypoints").also { WplFile.write(it, emptyList()) }
+                val refused = shouldThrow<CliktError> { withContext(Dispatchers.IO) { Pod(Lines()).parse(listOf("mission", "upload", empty.toString()) + connect) } }
+                refused.statusCode shouldBe 2
+                refused.message!! shouldContain "--allow-empty"
+                sim.missionServer.list(MissionType.MISSION).size shouldBe 25
+                val said = Lines()
+                withContext(Dispatchers.IO) {
+                    Pod(said).parse(listOf("mission", "upload", empty.toString(), "--allow-empty", "--connect", "udpin:127.0.0.1:$port"))
+                }
+                said.lines.last() shouldContain "cleared the mission list of vehicle 12"
+                sim.missionServer.list(MissionType.MISSION).shouldBeEmpty()
             } finally {
                 sim.stop()
                 dir.toFile().deleteRecursively()
@@ -65,7 +79,7 @@ class MissionCliSpec : StringSpec({
         }
     }
 
-    "a malformed WPL file fails with its line number and exit code 1, before any vehicle is asked" {
+    "a malformed WPL file fails with its line number and exit code 2 (bad input), before any vehicle is asked" {
         coroutineScope {
             val port = freePort()
             val sim = SimVehicle(SimVehicleConfig(systemId = 13, gcs = "udpout://127.0.0.1:$port"))
@@ -76,7 +90,7 @@ class MissionCliSpec : StringSpec({
                 val error = shouldThrow<CliktError> {
                     withContext(Dispatchers.IO) { Pod(Lines()).parse(listOf("mission", "upload", file.toString(), "--connect", "udpin:127.0.0.1:$port")) }
                 }
-                error.statusCode shouldBe 1
+                error.statusCode shouldBe 2
                 error.message!! shouldContain "line 3"
                 sim.missionServer.list(MissionType.MISSION).shouldBeEmpty()
             } finally {

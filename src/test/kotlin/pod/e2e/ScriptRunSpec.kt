@@ -61,9 +61,11 @@ class ScriptRunSpec : StringSpec({
     }
 
     "the same script again runs from the cache and gets the link given with --connect" {
-        val run = pod("run", script("fleet-and-distance.main.kts"), "--connect", "udpin://0.0.0.0:14550")
+        // pod run tries a udpin port before compiling (a port in use is exit 2): a free one here.
+        val address = "udpin://127.0.0.1:${freePort()}"
+        val run = pod("run", script("fleet-and-distance.main.kts"), "--connect", address)
         run.exitCode shouldBe 0
-        run.out shouldContainExactly listOf(distance, "fleet: Connect(address=udpin://0.0.0.0:14550)", "dsl: PodDsl", "args: ")
+        run.out shouldContainExactly listOf(distance, "fleet: Connect(address=$address)", "dsl: PodDsl", "args: ")
         cache.listFiles()!!.filter { it.name.endsWith(".jar") } shouldHaveSize 1
     }
 

@@ -44,6 +44,8 @@ internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo"
         "Dolphin's Listing 4 on simulated drones: two kept on survey, each replaced by a charged one when its battery runs low."
 
     override fun run() = runBlocking {
+        // The map is written at the end: a path that cannot take it fails now, not after the flight.
+        LocalFiles.checkWritable(map.toString())
         val view = LiveView(out, json, period = if (json) 20.seconds else 5.seconds, redraw = !json && System.console() != null)
         var failed: Throwable? = null
         try {

@@ -69,7 +69,7 @@ internal object FleetView {
             "heading" to pos?.heading?.degrees,
             "battery" to battery?.remaining, "voltage" to battery?.voltage,
             "mode" to t.mode.value?.name, "armed" to t.armed.value, "landed" to t.landedState.value.name,
-            "gps_fix" to gps?.fixType, "satellites" to gps?.satellites,
+            "gps_fix" to gps?.fix?.name, "satellites" to gps?.satellites,
             "link" to t.linkQuality.value.fraction, "lost_frames" to t.linkQuality.value.lost,
         )
     }

@@ -5,13 +5,15 @@ import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.core.subcommands
 import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.options.default
+import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.choice
 import pod.mavlink.MavlinkVehicle
+import pod.mavlink.mission.InvalidMission
 import pod.mavlink.mission.MissionType
+import pod.mavlink.mission.MissionValidation
 import pod.mavlink.mission.TransferProgress
 import pod.mavlink.mission.WplFile
-import pod.mavlink.mission.WplFormatException
 import java.io.IOException
 import java.nio.file.Path
 
@@ -32,7 +34,7 @@ internal abstract class MissionAction(out: Output, name: String) : VehicleComman
     override suspend fun afterInterrupt(vehicle: MavlinkVehicle): String = "transfer cancelled; the vehicle's flight is unchanged"
 
     protected val type by option("--type", help = "which list").choice("mission" to MissionType.MISSION, "fence" to MissionType.FENCE, "rally" to MissionType.RALLY)
-        .default(MissionType.MISSION)
+        .default(MissionType.MISSION, defaultForHelp = "mission")
 
     /** Reports progress: a bar redrawn in place for people at a terminal, JSON lines for scripts. */
     protected fun progress(action: String): (TransferProgress) -> Unit {
@@ -61,24 +63,32 @@ internal abstract class MissionAction(out: Output, name: String) : VehicleComman
 /** `pod mission upload FILE`. */
 internal class MissionUpload(out: Output) : MissionAction(out, "upload") {
     private val file by argument(help = "QGC WPL 110 file")
+    private val allowEmpty by option("--allow-empty", help = "upload a file with no items, which clears the vehicle's list").flag()
 
     override fun help(context: Context): String = "Upload a QGC WPL 110 file to a vehicle."
 
     private var items: List<pod.mavlink.mission.MissionItem> = emptyList()
 
+    // The whole file is read and checked as the vehicle would check it before any link is opened.
     override fun prepare() {
-        items = try {
-            WplFile.read(Path.of(file), type)
-        } catch (e: WplFormatException) {
-            fail("$file: ${e.message}")
-        } catch (e: IOException) {
-            fail("cannot read $file: ${e.message}")
+        items = LocalFiles.readWpl(file, type)
+        try {
+            MissionValidation.check(type, items)
+        } catch (e: InvalidMission) {
+            badInput("$file: ${e.message}")
+        }
+        if (items.isEmpty() && !allowEmpty) {
+            badInput("$file holds no items: uploading it would clear the vehicle's ${type.name.lowercase()} list; use 'pod mission clear', or pass --allow-empty")
         }
     }
 
     override suspend fun act(vehicle: MavlinkVehicle) {
         vehicle.mission.upload(items, type, progress("uploading"))
-        finish("uploaded ${items.size} ${type.name.lowercase()} items to vehicle ${vehicle.systemId}", "action" to "upload", "items" to items.size, "sysid" to vehicle.systemId)
+        val list = type.name.lowercase()
+        finish(
+            if (items.isEmpty()) "uploaded an empty $list list: cleared the $list list of vehicle ${vehicle.systemId}" else "uploaded ${items(items.size, type)} to vehicle ${vehicle.systemId}",
+            "action" to "upload", "items" to items.size, "sysid" to vehicle.systemId,
+        )
     }
 }
 
@@ -88,6 +98,11 @@ internal class MissionDownload(out: Output) : MissionAction(out, "download") {
 
     override fun help(context: Context): String = "Download a vehicle's list into a QGC WPL 110 file."
 
+    // A path that cannot be written fails now, not after a transfer that may take a minute.
+    override fun prepare() {
+        LocalFiles.checkWritable(file)
+    }
+
     override suspend fun act(vehicle: MavlinkVehicle) {
         val items = vehicle.mission.download(type, progress("downloading"))
         try {
@@ -95,7 +110,7 @@ internal class MissionDownload(out: Output) : MissionAction(out, "download") {
         } catch (e: IOException) {
             fail("cannot write $file: ${e.message}")
         }
-        finish("downloaded ${items.size} ${type.name.lowercase()} items from vehicle ${vehicle.systemId} to $file", "action" to "download", "items" to items.size, "sysid" to vehicle.systemId)
+        finish("downloaded ${items(items.size, type)} from vehicle ${vehicle.systemId} to $file", "action" to "download", "items" to items.size, "sysid" to vehicle.systemId)
     }
 }
 
@@ -108,3 +123,6 @@ internal class MissionClear(out: Output) : MissionAction(out, "clear") {
         finish("cleared the ${type.name.lowercase()} list of vehicle ${vehicle.systemId}", "action" to "clear", "sysid" to vehicle.systemId)
     }
 }
+
+/** "1 mission item", "25 fence items". */
+private fun items(count: Int, type: MissionType): String = "$count ${type.name.lowercase()} item" + if (count == 1) "" else "s"

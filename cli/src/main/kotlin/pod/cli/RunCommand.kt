@@ -17,7 +17,14 @@ import pod.launch.FleetChoice
 import pod.launch.Interruption
 import pod.launch.interruptionIn
 import pod.mavlink.link.LinkAddress
+import pod.mavlink.link.LinkException
+import pod.mavlink.link.PortInUse
 import java.io.File
+import java.io.IOException
+import java.net.BindException
+import java.net.InetSocketAddress
+import java.nio.channels.DatagramChannel
+import java.nio.channels.UnresolvedAddressException
 
 /**
  * `pod run SCRIPT.main.kts`: compiles and runs a Kotlin script in this JVM with Pod on its
@@ -30,7 +37,7 @@ internal class RunCommand : CliktCommand(name = "run") {
     private val scriptArgs by argument("ARGS", help = "passed to the script as args (put them after --)").multiple()
     private val sim by option("--sim", metavar = "N", help = "fly N simulated vehicles (default: 4)").int().restrictTo(1..254)
     private val connect by option("--connect", metavar = "ADDR", help = "fly the vehicles on this link (udpin://0.0.0.0:14550, …)")
-    private val timeScale by option("--time-scale", metavar = "X", help = "simulated seconds per real second (with --sim)")
+    private val timeScale by option("--time-scale", metavar = "X", help = "simulated seconds per real second (with --sim; default: 1)")
         .double().restrictTo(0.01..1000.0)
 
     override fun help(context: Context): String =
@@ -39,6 +46,10 @@ internal class RunCommand : CliktCommand(name = "run") {
     override fun run() {
         val file = File(script)
         if (!file.isFile) badInput("no such script: $script")
+        // Anything else would be compiled as Kotlin anyway, with a screenful of compiler errors.
+        if (!file.name.endsWith(".kts")) {
+            badInput("$script is not a Kotlin script: pod run takes a .main.kts file (to send a QGC WPL mission, use 'pod mission upload $script')")
+        }
         val choice = fleetChoice()
         val outcome = try {
             withSystemProperties(choice.toSystemProperties()) {
@@ -54,6 +65,10 @@ internal class RunCommand : CliktCommand(name = "run") {
             is ScriptOutcome.CompileFailed -> throw CliktError(outcome.messages.joinToString("\n"), statusCode = 1)
             is ScriptOutcome.Threw -> {
                 interruptionIn(outcome.error)?.let { throw stopped(it.signal) }
+                // The link named by --connect could not be opened (taken since the check above).
+                generateSequence(outcome.error) { it.cause }.filterIsInstance<LinkException>().firstOrNull()?.let {
+                    badInput(it.message ?: it.toString())
+                }
                 val what = outcome.error.message ?: outcome.error.javaClass.name
                 val where = outcome.line?.let { " (${file.name}:$it)" }.orEmpty()
                 throw CliktError("error: $what$where", statusCode = 1)
@@ -69,11 +84,31 @@ internal class RunCommand : CliktCommand(name = "run") {
             address != null && sim != null -> throw UsageError("--sim and --connect exclude each other")
             address != null && timeScale != null -> throw UsageError("--time-scale applies to simulated fleets (--sim) only")
             address != null -> {
-                reportingLinkErrors { LinkAddress.parse(address) }
+                val parsed = reportingLinkErrors { LinkAddress.parse(address) }
+                // A port that cannot be bound is bad input (exit 2), found before the script compiles.
+                // Only listening is tried: it takes nothing from anyone, where a TCP connect would.
+                if (parsed is LinkAddress.UdpIn && parsed.port != 0) tryListening(parsed)
                 FleetChoice.Connect(address)
             }
             else -> FleetChoice.Sim(sim ?: 4, timeScale ?: 1.0)
         }
+    }
+}
+
+/**
+ * Binds [address] for a moment, as the script's link will: a port in use ends `pod run` with exit 2
+ * before the script compiles. A plain channel, closed at once, so the port is free again when the
+ * script binds it.
+ */
+private fun tryListening(address: LinkAddress.UdpIn) {
+    try {
+        DatagramChannel.open().use { it.bind(InetSocketAddress(address.host, address.port)) }
+    } catch (e: BindException) {
+        badInput(if (e.message.orEmpty().contains("in use", ignoreCase = true)) PortInUse(address, e).message!! else "cannot listen on ${address.hostAndPort}: ${e.message}")
+    } catch (e: UnresolvedAddressException) {
+        badInput("cannot listen on ${address.hostAndPort}: unknown host '${address.host}'")
+    } catch (e: IOException) {
+        badInput("cannot listen on ${address.hostAndPort}: ${e.message}")
     }
 }
 

@@ -2,7 +2,6 @@ package pod.cli
 
 import com.github.ajalt.clikt.core.CliktCommand
 import com.github.ajalt.clikt.core.Context
-import com.github.ajalt.clikt.core.UsageError
 import com.github.ajalt.clikt.parameters.options.default
 import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
@@ -21,11 +20,14 @@ import pod.sim.SimVehicleConfig
 /** `pod sim`: simulated vehicles sending to a ground station, until interrupted. */
 internal class SimCommand(private val out: Output) : CliktCommand(name = "sim") {
     private val vehicles by option("--vehicles", help = "how many vehicles").int().restrictTo(1..254).default(1)
-    private val target by option("--out", help = "where telemetry goes, like SITL's --out").default("udpout:127.0.0.1:14550")
+    private val target by option(
+        "--out",
+        help = "where telemetry goes, like SITL's --out; with udpin:HOST:PORT the vehicles listen, vehicle i on PORT+i",
+    ).default("udpout:127.0.0.1:14550")
     private val type by option("--type", help = "airframe").choice("quad" to VehicleType.QUADROTOR, "plane" to VehicleType.FIXED_WING)
-        .default(VehicleType.QUADROTOR)
+        .default(VehicleType.QUADROTOR, defaultForHelp = "quad")
     private val autopilot by option("--autopilot", help = "autopilot flavour")
-        .choice("ardupilot" to Autopilot.ARDUPILOT, "px4" to Autopilot.PX4).default(Autopilot.ARDUPILOT)
+        .choice("ardupilot" to Autopilot.ARDUPILOT, "px4" to Autopilot.PX4).default(Autopilot.ARDUPILOT, defaultForHelp = "ardupilot")
     private val speedup by option("--speedup", help = "simulated seconds per real second").double().restrictTo(0.01..1000.0).default(1.0)
     private val sysid by option("--sysid", help = "system id of the first vehicle").int().restrictTo(1..254).default(1)
     private val json by option("--json", help = "JSON lines instead of text").flag()
@@ -34,7 +36,10 @@ internal class SimCommand(private val out: Output) : CliktCommand(name = "sim") 
 
     override fun run() = runBlocking {
         val address = reportingLinkErrors { LinkAddress.parse(target) }
-        if (sysid + vehicles - 1 > 254) throw UsageError("--sysid $sysid with --vehicles $vehicles goes past system id 254")
+        if (sysid + vehicles - 1 > 254) badInput("--sysid $sysid with --vehicles $vehicles goes past system id 254")
+        if (address is LinkAddress.UdpIn && address.port != 0 && address.port + vehicles - 1 > 65535) {
+            badInput("--out $target with --vehicles $vehicles needs ports ${address.port}..${address.port + vehicles - 1}, past 65535")
+        }
         val fleet = reportingLinkErrors {
             SimFleet.start(
                 vehicles, this,
@@ -43,13 +48,14 @@ internal class SimCommand(private val out: Output) : CliktCommand(name = "sim") 
         }
         for (v in fleet.vehicles) {
             val c = v.config
+            val own = LinkAddress.parse(c.gcs)
             out.line(
                 if (json) {
                     jsonLine("event" to "started", "sysid" to c.systemId, "type" to c.type.name, "autopilot" to c.autopilot.name,
-                        "local_port" to v.localPort, "out" to address.toString())
+                        "local_port" to v.localPort, "out" to own.toString())
                 } else {
                     "vehicle ${c.systemId}: ${c.type.name.lowercase()} on ${c.autopilot.name.lowercase()}, " +
-                        "sending from port ${v.localPort} to $address"
+                        if (own is LinkAddress.UdpIn) "listening on ${own.copy(port = v.localPort ?: own.port)}" else "sending from port ${v.localPort} to $own"
                 },
             )
         }

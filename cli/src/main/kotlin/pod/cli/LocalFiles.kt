@@ -1,0 +1,61 @@
+package pod.cli
+
+import pod.mavlink.mission.MissionItem
+import pod.mavlink.mission.MissionType
+import pod.mavlink.mission.WplFile
+import pod.mavlink.mission.WplFormatException
+import java.io.IOException
+import java.nio.charset.CharacterCodingException
+import java.nio.file.Files
+import java.nio.file.InvalidPathException
+import java.nio.file.NoSuchFileException
+import java.nio.file.Path
+
+/** Files a command reads or writes, checked before any link opens: every problem is one [badInput] line naming the file. */
+internal object LocalFiles {
+    /** The items of the WPL file [name] as a [type] list. */
+    fun readWpl(name: String, type: MissionType): List<MissionItem> {
+        val path = path(name)
+        if (Files.isDirectory(path)) badInput("$name is a directory, not a QGC WPL 110 file")
+        // 65535 items of at most a few hundred characters each: anything far larger is not a WPL file.
+        if (Files.isRegularFile(path) && Files.size(path) > MAX_BYTES) {
+            badInput("$name is too large for a QGC WPL 110 file (${Files.size(path) / 1_048_576} MiB; a list holds at most 65535 items)")
+        }
+        return try {
+            WplFile.read(path, type)
+        } catch (e: WplFormatException) {
+            badInput("$name: ${e.message}")
+        } catch (e: NoSuchFileException) {
+            badInput("no such file: $name")
+        } catch (e: CharacterCodingException) {
+            // Files.readString's MalformedInputException says only "Input length = 1".
+            badInput("$name is not a QGC WPL 110 file: it is not UTF-8 text")
+        } catch (e: IOException) {
+            badInput("cannot read $name: ${e.message ?: e.javaClass.simpleName}")
+        }
+    }
+
+    /**
+     * Refuses an output path that cannot be written: a directory, a missing or non-directory
+     * parent, a read-only file or folder. Creates nothing.
+     */
+    fun checkWritable(name: String) {
+        val path = path(name).toAbsolutePath()
+        val parent = path.parent
+        when {
+            Files.isDirectory(path) -> badInput("cannot write $name: it is a directory")
+            parent != null && !Files.exists(parent) -> badInput("cannot write $name: no such directory $parent")
+            parent != null && !Files.isDirectory(parent) -> badInput("cannot write $name: $parent is not a directory")
+            Files.exists(path) && !Files.isWritable(path) -> badInput("cannot write $name: the file is read-only")
+            !Files.exists(path) && parent != null && !Files.isWritable(parent) -> badInput("cannot write $name: the directory $parent is read-only")
+        }
+    }
+
+    private const val MAX_BYTES = 64L * 1024 * 1024
+
+    private fun path(name: String): Path = try {
+        Path.of(name)
+    } catch (e: InvalidPathException) {
+        badInput("'$name' is not a file path: ${e.reason}")
+    }
+}
