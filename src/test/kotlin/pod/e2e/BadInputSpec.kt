@@ -189,6 +189,14 @@ class BadInputSpec : StringSpec({
         text shouldContain "10s"
         text shouldContain "(default: mission)" // the choice a person types, not the enum's name
         pod("sim", "--help").out.joinToString("\n") shouldContain "udpout:127.0.0.1:14550"
+        // Where -5 is a number, -h still asks for help.
+        for (command in listOf("takeoff", "goto", "param set")) {
+            val h = pod(*command.split(" ").toTypedArray(), "-h")
+            withClue("pod $command -h printed:\n${h.text}") {
+                h.code shouldBe 0
+                h.out.joinToString("\n") shouldContain "Usage: pod $command"
+            }
+        }
     }
 
     "an unexpected failure is one line and exit 1, not a stack trace" {

@@ -87,5 +87,10 @@ fun main(args: Array<String>) {
  * Lets this command read `-1` or `-8.59` as an argument. Clikt reads a token as a short option
  * when some option of the command has a one-dash name, and only `-h` has one in Pod; with help
  * as `--help` alone such tokens go to the arguments, while an unknown `--option` is still refused.
+ * `-h` still shows the help: Clikt reads a token whose transformed form is a long option's name as
+ * that option.
  */
-internal fun CliktCommand.negativeNumbersAsArguments() = configureContext { helpOptionNames = setOf("--help") }
+internal fun CliktCommand.negativeNumbersAsArguments() = configureContext {
+    helpOptionNames = setOf("--help")
+    transformToken = { token -> if (token == "-h") "--help" else token }
+}
