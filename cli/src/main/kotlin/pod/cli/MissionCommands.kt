@@ -7,6 +7,7 @@ import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.options.default
 import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.choice
+import pod.cli.json.Event
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.mission.MissionType
 import pod.mavlink.mission.TransferProgress
@@ -42,7 +43,7 @@ internal abstract class MissionAction(out: Output, name: String) : VehicleComman
             if (p.done != last) {
                 last = p.done
                 when {
-                    json -> out.line(jsonLine("event" to "progress", "action" to action, "done" to p.done, "total" to p.total))
+                    json -> emit(Event.Progress(action, p.done, p.total))
                     terminal -> print("\r$action ${bar(p)}")
                     p.done == p.total || p.total == 0 || p.done * 4 / p.total != (p.done - 1) * 4 / p.total ->
                         out.line("$action ${bar(p)}")
@@ -78,7 +79,7 @@ internal class MissionUpload(out: Output) : MissionAction(out, "upload") {
 
     override suspend fun act(vehicle: MavlinkVehicle) {
         vehicle.mission.upload(items, type, progress("uploading"))
-        finish("uploaded ${items.size} ${type.name.lowercase()} items to vehicle ${vehicle.systemId}", "action" to "upload", "items" to items.size, "sysid" to vehicle.systemId)
+        finish("uploaded ${items.size} ${type.name.lowercase()} items to vehicle ${vehicle.systemId}", vehicle, action = "upload", items = items.size)
     }
 }
 
@@ -95,7 +96,7 @@ internal class MissionDownload(out: Output) : MissionAction(out, "download") {
         } catch (e: IOException) {
             fail("cannot write $file: ${e.message}")
         }
-        finish("downloaded ${items.size} ${type.name.lowercase()} items from vehicle ${vehicle.systemId} to $file", "action" to "download", "items" to items.size, "sysid" to vehicle.systemId)
+        finish("downloaded ${items.size} ${type.name.lowercase()} items from vehicle ${vehicle.systemId} to $file", vehicle, action = "download", items = items.size)
     }
 }
 
@@ -105,6 +106,6 @@ internal class MissionClear(out: Output) : MissionAction(out, "clear") {
 
     override suspend fun act(vehicle: MavlinkVehicle) {
         vehicle.mission.clear(type)
-        finish("cleared the ${type.name.lowercase()} list of vehicle ${vehicle.systemId}", "action" to "clear", "sysid" to vehicle.systemId)
+        finish("cleared the ${type.name.lowercase()} list of vehicle ${vehicle.systemId}", vehicle, action = "clear", items = 0)
     }
 }

@@ -12,6 +12,8 @@ import com.github.ajalt.clikt.parameters.types.int
 import com.github.ajalt.clikt.parameters.types.restrictTo
 import kotlinx.coroutines.awaitCancellation
 import kotlinx.coroutines.runBlocking
+import pod.cli.json.Event
+import pod.cli.json.EventJson
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleType
 import pod.mavlink.link.LinkAddress
@@ -45,8 +47,7 @@ internal class SimCommand(private val out: Output) : CliktCommand(name = "sim") 
             val c = v.config
             out.line(
                 if (json) {
-                    jsonLine("event" to "started", "sysid" to c.systemId, "type" to c.type.name, "autopilot" to c.autopilot.name,
-                        "local_port" to v.localPort, "out" to address.toString())
+                    EventJson.encode(Event.Started(c.systemId, c.type.name, c.autopilot.name, v.localPort, address.toString()))
                 } else {
                     "vehicle ${c.systemId}: ${c.type.name.lowercase()} on ${c.autopilot.name.lowercase()}, " +
                         "sending from port ${v.localPort} to $address"
