@@ -106,9 +106,22 @@ class EventJsonTest : StringSpec({
         EngineEvent.Mission(at, 3, 1, MissionEvent.StepStarted(4)).toEvent() shouldBe null
     }
 
+    "the README's --json section has a row for every event kind, naming each of its fields" {
+        // Surefire runs in the module's directory; the README is the repository's.
+        val readme = java.io.File("../README.md").readLines()
+        for (event in samples) {
+            val kind = event.kind()
+            val row = readme.singleOrNull { it.startsWith("| `$kind` |") }
+            withClue("README row for $kind") { (row != null) shouldBe true }
+            for (field in fieldsOf(event)) withClue("README row for $kind names `$field`") { row!!.contains("`$field`") shouldBe true }
+        }
+    }
+
     "a program's picked vehicles are a JSON array of system ids" {
         EventJson.encode(EngineEvent.Picked(2.seconds, listOf(3, 4)).toEvent()!!) shouldBe """{"event":"picked","at":2.0,"vehicles":[3,4]}"""
     }
 })
+
+private fun fieldsOf(event: Event): Set<String> = Json.parseToJsonElement(EventJson.encode(event)).jsonObject.keys - "event"
 
 private fun Event.kind(): String = (Json.parseToJsonElement(EventJson.encode(this)) as JsonObject).getValue("event").jsonPrimitive.content
