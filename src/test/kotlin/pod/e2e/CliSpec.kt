@@ -8,17 +8,21 @@ import io.kotest.matchers.collections.shouldContainAll
 import io.kotest.matchers.collections.shouldHaveSize
 import io.kotest.matchers.ints.shouldBeGreaterThan
 import io.kotest.matchers.ints.shouldBeGreaterThanOrEqual
+import io.kotest.matchers.nulls.shouldNotBeNull
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.async
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.flow.take
+import kotlinx.coroutines.flow.toList
 import kotlinx.coroutines.withTimeout
 import pod.cli.Pod
 import pod.cli.json.Event
 import pod.e2e.Python.stop
 import java.net.DatagramSocket
+import kotlin.concurrent.thread
 import kotlin.time.Duration.Companion.seconds
 
 class CliSpec : StringSpec({
@@ -70,6 +74,28 @@ class CliSpec : StringSpec({
         val svg = kotlin.io.path.Path(map.toString()).toFile().readText()
         svg shouldContain "<svg"
         Regex("<polyline").findAll(svg).count() shouldBeGreaterThanOrEqual 8 // planned and flown, 4 vehicles
+    }
+
+    "pod sim --json announces each vehicle it started with a started event" {
+        val out = Captured()
+        val port = freePort()
+        // `pod sim` runs until interrupted; interrupting its thread cancels its runBlocking.
+        val sim = thread(name = "pod-sim") {
+            runCatching { Pod(out).parse(listOf("sim", "--vehicles", "2", "--sysid", "20", "--out", "udpout:127.0.0.1:$port", "--json")) }
+        }
+        try {
+            val started = withTimeout(20.seconds) { out.eventsOf<Event.Started>().take(2).toList() }
+            started.map { it.sysid } shouldBe listOf(20, 21)
+            for (e in started) {
+                (e.type to e.autopilot) shouldBe ("QUADROTOR" to "ARDUPILOT")
+                e.out shouldBe "udpout://127.0.0.1:$port"
+                e.localPort.shouldNotBeNull()
+            }
+            out.events shouldHaveSize 2
+        } finally {
+            sim.interrupt()
+            sim.join(10_000)
+        }
     }
 
     "a bad connection string is a clear error with exit code 2" {
