@@ -5,13 +5,16 @@ import com.github.ajalt.clikt.core.parse
 import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.shouldBe
+import io.kotest.matchers.doubles.shouldBeGreaterThanOrEqual
 import io.kotest.matchers.string.shouldContain
+import io.kotest.matchers.types.shouldBeInstanceOf
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeout
 import pod.cli.Pod
+import pod.cli.json.Event
 import pod.core.vehicle.LandedState
 import pod.sim.SimVehicle
 import pod.sim.SimVehicleConfig
@@ -25,22 +28,25 @@ class ActionCliSpec : StringSpec({
             val sim = SimVehicle(SimVehicleConfig(systemId = 51, timeScale = 5.0, gcs = "udpout://127.0.0.1:$port"))
             try {
                 sim.start(this)
-                suspend fun pod(vararg args: String): String {
-                    val out = Lines()
+                // The command's last line, its done event (every line before it must decode too).
+                suspend fun pod(vararg args: String): Event.Done {
+                    val out = Captured()
                     withContext(Dispatchers.IO) { Pod(out).parse(args.toList() + listOf("--connect", "udpin:127.0.0.1:$port", "--sysid", "51", "--json")) }
-                    return out.lines.last()
+                    return out.events.last().shouldBeInstanceOf<Event.Done>().also { it.sysid shouldBe 51 }
                 }
                 // At 5x a parked copter's 10 s auto-disarm would beat the 1 Hz heartbeat that confirms arming.
-                pod("param", "set", "DISARM_DELAY", "0") shouldContain "\"value\":0.0"
-                pod("param", "get", "WPNAV_SPEED") shouldContain "\"value\":500.0"
-                pod("mode", "guided") shouldContain "\"mode\":\"GUIDED\""
-                pod("arm") shouldContain "\"armed\":true"
-                pod("takeoff", "12") shouldContain "\"action\":\"takeoff\""
+                pod("param", "set", "DISARM_DELAY", "0").run { listOf(action, name, value) } shouldBe listOf("param-set", "DISARM_DELAY", 0.0)
+                pod("param", "get", "WPNAV_SPEED").run { listOf(action, name, value) } shouldBe listOf("param-get", "WPNAV_SPEED", 500.0)
+                pod("mode", "guided").mode shouldBe "GUIDED"
+                pod("arm").armed shouldBe true
+                val takeoff = pod("takeoff", "12")
+                takeoff.action shouldBe "takeoff"
+                takeoff.relativeAltM!! shouldBeGreaterThanOrEqual 11.0
                 (sim.state.value.relativeAltitude.meters >= 11.0) shouldBe true
                 val home = SimVehicleConfig.DEFAULT_HOME
                 val north = home.offset(north = pod.core.units.Distance(20.0), east = pod.core.units.Distance(0.0))
-                pod("goto", "${north.latitude}", "${north.longitude}", "12", "--arrive") shouldContain "\"event\":\"done\""
-                pod("land", "--until-landed") shouldContain "\"armed\":false"
+                pod("goto", "${north.latitude}", "${north.longitude}", "12", "--arrive").action shouldBe "goto"
+                pod("land", "--until-landed").armed shouldBe false
                 withTimeout(5.seconds) { sim.state.first { it.landedState == LandedState.ON_GROUND } }
             } finally {
                 sim.stop()
@@ -63,7 +69,7 @@ class ActionCliSpec : StringSpec({
                 // battery cannot clear by waiting, so the booting vehicle is not waited for.
                 error.message!! shouldContain "MAV_CMD_COMPONENT_ARM_DISARM was FAILED: "
                 error.message!! shouldContain "PreArm: Battery 1 below minimum arming voltage"
-                out.lines.last() shouldContain "\"event\":\"error\""
+                out.events.last().shouldBeInstanceOf<Event.Error>().message shouldContain "PreArm: Battery 1 below minimum arming voltage"
             } finally {
                 sim.stop()
             }

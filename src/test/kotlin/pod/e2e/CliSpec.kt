@@ -4,35 +4,26 @@ import com.github.ajalt.clikt.core.CliktError
 import com.github.ajalt.clikt.core.parse
 import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.collections.shouldContainAll
 import io.kotest.matchers.collections.shouldHaveSize
+import io.kotest.matchers.ints.shouldBeGreaterThan
 import io.kotest.matchers.ints.shouldBeGreaterThanOrEqual
+import io.kotest.matchers.nulls.shouldNotBeNull
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.async
 import kotlinx.coroutines.coroutineScope
-import kotlinx.coroutines.flow.MutableSharedFlow
 import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.flow.take
+import kotlinx.coroutines.flow.toList
 import kotlinx.coroutines.withTimeout
-import pod.cli.Output
 import pod.cli.Pod
+import pod.cli.json.Event
 import pod.e2e.Python.stop
 import java.net.DatagramSocket
-import java.util.concurrent.CopyOnWriteArrayList
+import kotlin.concurrent.thread
 import kotlin.time.Duration.Companion.seconds
-
-/** What a command printed, line by line, and a flow to await a line as it comes. */
-private class Captured : Output {
-    val lines = CopyOnWriteArrayList<String>()
-    val flow = MutableSharedFlow<String>(replay = 10_000)
-    override fun line(text: String) {
-        lines += text
-        flow.tryEmit(text)
-    }
-}
-
-private fun String.field(name: String): String? =
-    Regex("\"$name\":(\"[^\"]*\"|[^,}]*)").find(this)?.groupValues?.get(1)?.trim('"')
 
 class CliSpec : StringSpec({
 
@@ -42,30 +33,28 @@ class CliSpec : StringSpec({
             val watch = async(Dispatchers.IO) {
                 Pod(out).parse(listOf("watch", "--connect", "udpin:127.0.0.1:0", "--json", "--duration", "6s", "--lost-after", "1s"))
             }
-            val listening = withTimeout(20.seconds) { out.flow.first { it.contains("\"event\":\"listening\"") } }
-            val port = listening.field("port")!!.toInt()
-            val peer = Python.start("pymavlink_vehicle.py", port, 42, 3)
+            val listening = withTimeout(20.seconds) { out.eventsOf<Event.Listening>().first() }
+            val peer = Python.start("pymavlink_vehicle.py", listening.port, 42, 3)
             try {
-                val found = withTimeout(20.seconds) { out.flow.first { it.contains("\"event\":\"found\"") } }
-                found.field("sysid") shouldBe "42"
-                found.field("type") shouldBe "FIXED_WING"
-                found.field("autopilot") shouldBe "ARDUPILOT"
-                val telemetry = withTimeout(10.seconds) {
-                    out.flow.first { it.contains("\"event\":\"telemetry\"") && it.field("lat") != "null" }
-                }
-                telemetry.field("lat")!!.toDouble() shouldBe 41.1234567
-                telemetry.field("lon")!!.toDouble() shouldBe -8.54321
-                telemetry.field("alt_msl")!!.toDouble() shouldBe 95.5
-                telemetry.field("alt_rel")!!.toDouble() shouldBe 12.3
-                telemetry.field("heading")!!.toDouble() shouldBe 90.0
-                telemetry.field("mode") shouldBe "AUTO"
-                telemetry.field("armed") shouldBe "true"
+                val found = withTimeout(20.seconds) { out.eventsOf<Event.Found>().first() }
+                found shouldBe Event.Found(sysid = 42, compid = 1, type = "FIXED_WING", autopilot = "ARDUPILOT")
+                val telemetry = withTimeout(10.seconds) { out.eventsOf<Event.Telemetry>().first { it.lat != null } }
+                telemetry.sysid shouldBe 42
+                telemetry.lat shouldBe 41.1234567
+                telemetry.lon shouldBe -8.54321
+                telemetry.altMsl shouldBe 95.5
+                telemetry.altRel shouldBe 12.3
+                telemetry.heading shouldBe 90.0
+                telemetry.mode shouldBe "AUTO"
+                telemetry.armed shouldBe true
                 // The script stops after 3 s; the watcher then marks the vehicle lost.
-                withTimeout(10.seconds) { out.flow.first { it.contains("\"event\":\"lost\"") } }.field("sysid") shouldBe "42"
+                withTimeout(10.seconds) { out.eventsOf<Event.Lost>().first() }.sysid shouldBe 42
             } finally {
                 peer.stop()
             }
             watch.await()
+            // Every line the watcher printed is one of the model's events.
+            out.events.map { it::class }.toSet() shouldContainAll setOf(Event.Listening::class, Event.Found::class, Event.Telemetry::class, Event.Lost::class)
         }
     }
 
@@ -73,15 +62,40 @@ class CliSpec : StringSpec({
         val out = Captured()
         val map = kotlin.io.path.createTempFile("pod-demo", ".svg")
         Pod(out).parse(listOf("demo", "--json", "--for", "20m", "--time-scale", "40", "--map", map.toString()))
-        val picked = out.lines.filter { it.contains("\"event\":\"picked\"") }.map { it.field("vehicles") }
+        val events = out.events
+        val picked = events.filterIsInstance<Event.Picked>().map { it.vehicles }
         picked shouldHaveSize 4
-        picked.toSet() shouldBe setOf("1", "2", "3", "4")
-        out.lines.filter { it.contains("\"event\":\"flying\"") }.map { it.field("vehicle") }.toSet() shouldBe setOf("1", "2", "3", "4")
-        out.lines.last().field("event") shouldBe "demo_done"
-        out.lines.last().field("ok") shouldBe "true"
+        picked.flatten().sorted() shouldBe listOf(1, 2, 3, 4)
+        events.filterIsInstance<Event.Flying>().map { it.vehicle }.toSet() shouldBe setOf(1, 2, 3, 4)
+        val missions = events.filterIsInstance<Event.Mission>()
+        missions.map { it.what }.toSet() shouldContainAll setOf("uploaded", "started")
+        missions.filter { it.what == "uploaded" }.forEach { (it.steps ?: 0) shouldBeGreaterThan 0 }
+        events.last() shouldBe Event.DemoDone(ok = true, error = null, map = map.toString())
         val svg = kotlin.io.path.Path(map.toString()).toFile().readText()
         svg shouldContain "<svg"
         Regex("<polyline").findAll(svg).count() shouldBeGreaterThanOrEqual 8 // planned and flown, 4 vehicles
+    }
+
+    "pod sim --json announces each vehicle it started with a started event" {
+        val out = Captured()
+        val port = freePort()
+        // `pod sim` runs until interrupted; interrupting its thread cancels its runBlocking.
+        val sim = thread(name = "pod-sim") {
+            runCatching { Pod(out).parse(listOf("sim", "--vehicles", "2", "--sysid", "20", "--out", "udpout:127.0.0.1:$port", "--json")) }
+        }
+        try {
+            val started = withTimeout(20.seconds) { out.eventsOf<Event.Started>().take(2).toList() }
+            started.map { it.sysid } shouldBe listOf(20, 21)
+            for (e in started) {
+                (e.type to e.autopilot) shouldBe ("QUADROTOR" to "ARDUPILOT")
+                e.out shouldBe "udpout://127.0.0.1:$port"
+                e.localPort.shouldNotBeNull()
+            }
+            out.events shouldHaveSize 2
+        } finally {
+            sim.interrupt()
+            sim.join(10_000)
+        }
     }
 
     "a bad connection string is a clear error with exit code 2" {

@@ -3,6 +3,9 @@ package pod.e2e
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.withTimeout
+import kotlinx.serialization.json.addJsonObject
+import kotlinx.serialization.json.buildJsonArray
+import kotlinx.serialization.json.put
 import pod.mavlink.GroundStation
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.mission.MissionItem
@@ -91,10 +94,22 @@ internal fun Map<String, String>.toMissionItem(): MissionItem {
  * The items as a JSON array for the MAVSDK scripts. Floats are written as the exact double value
  * of the float (NaN as NaN, which Python's json reads), so Python's float → float32 is exact.
  */
-internal fun List<MissionItem>.toJson(): String = joinToString(",", "[", "]") {
-    fun f(v: Float) = v.toDouble().toString()
-    "{\"seq\":${it.seq},\"frame\":${it.frame},\"command\":${it.command}," +
-        "\"current\":${if (it.current) 1 else 0},\"autocontinue\":${if (it.autocontinue) 1 else 0}," +
-        "\"param1\":${f(it.param1)},\"param2\":${f(it.param2)},\"param3\":${f(it.param3)},\"param4\":${f(it.param4)}," +
-        "\"x\":${it.x},\"y\":${it.y},\"z\":${f(it.z)},\"mission_type\":${it.missionType.mavValue}}"
-}
+internal fun List<MissionItem>.toJson(): String = buildJsonArray {
+    for (it in this@toJson) {
+        addJsonObject {
+            put("seq", it.seq)
+            put("frame", it.frame)
+            put("command", it.command)
+            put("current", if (it.current) 1 else 0)
+            put("autocontinue", if (it.autocontinue) 1 else 0)
+            put("param1", it.param1.toDouble())
+            put("param2", it.param2.toDouble())
+            put("param3", it.param3.toDouble())
+            put("param4", it.param4.toDouble())
+            put("x", it.x)
+            put("y", it.y)
+            put("z", it.z.toDouble())
+            put("mission_type", it.missionType.mavValue)
+        }
+    }
+}.toString()

@@ -7,11 +7,12 @@ import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
+import io.kotest.matchers.types.shouldBeInstanceOf
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.withContext
-import pod.cli.Output
 import pod.cli.Pod
+import pod.cli.json.Event
 import pod.core.vehicle.Autopilot
 import pod.mavlink.mission.MissionType
 import pod.mavlink.mission.WplFile
@@ -20,15 +21,7 @@ import pod.sim.SimVehicleConfig
 import java.net.DatagramSocket
 import java.net.InetAddress
 import java.nio.file.Files
-import java.util.concurrent.CopyOnWriteArrayList
 import kotlin.io.path.writeText
-
-internal class Lines : Output {
-    val lines = CopyOnWriteArrayList<String>()
-    override fun line(text: String) {
-        lines += text
-    }
-}
 
 /** A UDP port free right now on 127.0.0.1 (the CLI binds it a moment later). */
 internal fun freePort(): Int = DatagramSocket(0, InetAddress.getByName("127.0.0.1")).use { it.localPort }
@@ -45,19 +38,27 @@ class MissionCliSpec : StringSpec({
                 val items = waypoints(25)
                 val upload = dir.resolve("plan.waypoints").also { WplFile.write(it, items) }
                 val connect = listOf("--connect", "udpin:127.0.0.1:$port", "--json")
-                val out = Lines()
+                val out = Captured()
                 withContext(Dispatchers.IO) { Pod(out).parse(listOf("mission", "upload", upload.toString()) + connect) }
-                out.lines.last() shouldContain "\"event\":\"done\""
-                out.lines.last() shouldContain "\"items\":25"
-                out.lines.filter { it.contains("\"event\":\"progress\"") }.last() shouldContain "\"done\":25,\"total\":25"
+                val uploaded = out.events
+                val done = uploaded.last().shouldBeInstanceOf<Event.Done>()
+                (done.action to done.items) shouldBe ("upload" to 25)
+                done.sysid shouldBe 12
+                uploaded.filterIsInstance<Event.Progress>().last() shouldBe Event.Progress("uploading", 25, 25)
                 sim.missionServer.list(MissionType.MISSION) shouldBe items.map { it.copy(current = false) }
 
                 val download = dir.resolve("back.waypoints")
-                withContext(Dispatchers.IO) { Pod(Lines()).parse(listOf("mission", "download", download.toString()) + connect) }
+                val downloaded = Captured()
+                withContext(Dispatchers.IO) { Pod(downloaded).parse(listOf("mission", "download", download.toString()) + connect) }
                 WplFile.read(download) shouldBe items
+                downloaded.events.last().shouldBeInstanceOf<Event.Done>().items shouldBe 25
+                downloaded.events.filterIsInstance<Event.Progress>().last() shouldBe Event.Progress("downloading", 25, 25)
 
-                withContext(Dispatchers.IO) { Pod(Lines()).parse(listOf("mission", "clear") + connect) }
+                val cleared = Captured()
+                withContext(Dispatchers.IO) { Pod(cleared).parse(listOf("mission", "clear") + connect) }
                 sim.missionServer.list(MissionType.MISSION).shouldBeEmpty()
+                val clearedDone = cleared.events.single().shouldBeInstanceOf<Event.Done>()
+                (clearedDone.action to clearedDone.items) shouldBe ("clear" to 0)
 
                 // A header-only file clears the list only when asked to, and then says it cleared.
                 withContext(Dispatchers.IO) { Pod(Lines()).parse(listOf("mission", "upload", upload.toString()) + connect) }

@@ -4,6 +4,9 @@ import kotlinx.coroutines.flow.MutableSharedFlow
 import kotlinx.coroutines.flow.SharedFlow
 import kotlinx.coroutines.flow.asSharedFlow
 import kotlinx.coroutines.flow.first
+import kotlinx.serialization.json.Json
+import kotlinx.serialization.json.JsonPrimitive
+import kotlinx.serialization.json.jsonObject
 import java.io.File
 import java.io.IOException
 import java.util.concurrent.TimeUnit
@@ -110,9 +113,11 @@ internal class JsonPeer(private val name: String, val process: Process) {
         /** The event this class adds when the peer's stdout closes, with its exit "code". */
         const val EXITED = "exited"
 
-        private val FIELD = Regex("""\"(\w+)\":\s*("(?:[^"\\]|\\.)*"|[^,}]+)""")
-
-        private fun parseFlatJson(line: String): Map<String, String> =
-            FIELD.findAll(line).associate { m -> m.groupValues[1] to m.groupValues[2].trim().removeSurrounding("\"") }
+        /** The fields of a flat JSON object, each value as its text (Python's NaN as "NaN"); null when [line] is not one. */
+        private fun parseFlatJson(line: String): Map<String, String>? = try {
+            Json.parseToJsonElement(line).jsonObject.mapValues { (_, v) -> if (v is JsonPrimitive) v.content else v.toString() }
+        } catch (e: IllegalArgumentException) {
+            null // not JSON (SerializationException), or not an object
+        }
     }
 }

@@ -5,6 +5,10 @@ import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.cancel
 import kotlinx.coroutines.runBlocking
+import kotlinx.serialization.json.JsonArray
+import kotlinx.serialization.json.addJsonObject
+import kotlinx.serialization.json.buildJsonArray
+import kotlinx.serialization.json.put
 import pod.mavlink.GroundStation
 import pod.mavlink.GroundStationConfig
 import java.io.File
@@ -269,11 +273,21 @@ private fun table(summary: List<IngestSummary>): String = buildString {
     }
 }
 
-private fun toJson(summary: List<IngestSummary>): String = summary.joinToString(",\n", "[\n", "\n]\n") { s ->
-    String.format(
-        Locale.ROOT,
-        "  {\"target\": \"%s\", \"load\": \"%s\", \"offered\": %.1f, \"delivered\": %.1f, \"lossPercent\": %.2f, " +
-            "\"lossMin\": %.2f, \"lossMax\": %.2f, \"cpuMicrosPerDatagram\": %.3f, \"runs\": %d}",
-        s.target.name, s.load.label, s.offered, s.delivered, s.loss, s.lossRange.start, s.lossRange.endInclusive, s.cpuMicros, s.runs.size,
-    )
-}
+private fun toJson(summary: List<IngestSummary>): String = JsonText.pretty.encodeToString(
+    JsonArray.serializer(),
+    buildJsonArray {
+        for (s in summary) {
+            addJsonObject {
+                put("target", s.target.name)
+                put("load", s.load.label)
+                put("offered", JsonText.num(s.offered))
+                put("delivered", JsonText.num(s.delivered))
+                put("lossPercent", JsonText.num(s.loss))
+                put("lossMin", JsonText.num(s.lossRange.start))
+                put("lossMax", JsonText.num(s.lossRange.endInclusive))
+                put("cpuMicrosPerDatagram", JsonText.num(s.cpuMicros))
+                put("runs", s.runs.size)
+            }
+        }
+    },
+) + "\n"

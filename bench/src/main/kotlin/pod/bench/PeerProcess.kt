@@ -29,7 +29,7 @@ class PeerProcess(
         thread(isDaemon = true, name = "peer-stdout") {
             try {
                 process.inputStream.bufferedReader().forEachLine { line ->
-                    if (line.startsWith("{")) events.put(JsonText.parseFlat(line))
+                    if (line.startsWith("{")) JsonText.parseFlat(line)?.let(events::put)
                 }
             } catch (_: IOException) {
                 // Killed mid-line.

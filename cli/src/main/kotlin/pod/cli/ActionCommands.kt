@@ -14,6 +14,7 @@ import kotlinx.coroutines.flow.filterNotNull
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withTimeoutOrNull
+import pod.cli.json.Event
 import pod.core.units.Location
 import pod.core.units.m
 import pod.mavlink.MavlinkVehicle
@@ -45,12 +46,7 @@ internal abstract class ActionCommand(out: Output, name: String, private val sum
 
     override suspend fun act(vehicle: MavlinkVehicle) {
         val text = perform(vehicle)
-        val t = vehicle.telemetry
-        finish(
-            "vehicle ${vehicle.systemId}: $text",
-            "action" to commandName, "sysid" to vehicle.systemId, "mode" to t.mode.value?.name, "armed" to t.armed.value,
-            "relative_alt_m" to t.position.value?.relativeAltitude?.meters,
-        )
+        finish("vehicle ${vehicle.systemId}: $text", vehicle, action = commandName)
     }
 }
 
@@ -61,7 +57,7 @@ internal class ArmCommand(out: Output) : ActionCommand(out, "arm", "Arm the moto
     override suspend fun perform(vehicle: MavlinkVehicle): String = coroutineScope {
         val progress = launch {
             vehicle.action.waitingFor.filterNotNull().distinctUntilChanged().collect { reason ->
-                out.line(if (json) jsonLine("event" to "waiting", "sysid" to vehicle.systemId, "for" to reason) else "vehicle ${vehicle.systemId}: waiting: $reason")
+                if (json) emit(Event.Waiting(vehicle.systemId, reason)) else out.line("vehicle ${vehicle.systemId}: waiting: $reason")
             }
         }
         try {

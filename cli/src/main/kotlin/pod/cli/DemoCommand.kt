@@ -13,8 +13,9 @@ import com.github.ajalt.clikt.parameters.types.path
 import com.github.ajalt.clikt.parameters.types.restrictTo
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.runBlocking
-import pod.core.engine.EngineEvent
-import pod.core.platform.MissionEvent
+import pod.cli.json.Event
+import pod.cli.json.EventJson
+import pod.cli.json.toEvent
 import pod.launch.Interruption
 import pod.launch.Interrupted
 import pod.samples.listing4
@@ -53,7 +54,7 @@ internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo"
                 flavors = List(count) { SimFlavor.ARDUCOPTER },
                 timeScale = timeScale,
                 onLine = { if (!json) view.note(it) },
-                onEvent = { if (json) eventJson(it)?.let(out::line) },
+                onEvent = { if (json) it.toEvent()?.let { e -> out.line(EventJson.encode(e)) } },
                 map = map,
             ) { sim ->
                 val shown = launch { view.show(sim.station) }
@@ -69,32 +70,13 @@ internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo"
             throw e
         } catch (e: Interrupted) {
             // The drones live in this process and stop with it; the cancelled program made them safe first.
-            out.line(if (json) jsonLine("event" to "interrupted", "signal" to e.signal, "map" to map.toString()) else "interrupted by ${e.signal}: demo stopped; map so far: $map")
+            out.line(if (json) EventJson.encode(Event.Interrupted(e.signal, map = map.toString())) else "interrupted by ${e.signal}: demo stopped; map so far: $map")
             throw CliktError("pod: stopped by ${e.signal}", statusCode = Interruption.EXIT_CODE)
         } catch (e: Exception) {
             failed = e
         }
-        if (json) out.line(jsonLine("event" to "demo_done", "ok" to (failed == null), "error" to failed?.message, "map" to map.toString()))
+        if (json) out.line(EventJson.encode(Event.DemoDone(ok = failed == null, error = failed?.let { it.message ?: it::class.simpleName }, map = map.toString())))
         else out.line(if (failed == null) "demo done; map of missions and tracks: $map" else "demo failed: ${failed.message}; map so far: $map")
         if (failed != null) throw CliktError("demo failed: ${failed.message}", statusCode = 1)
-    }
-
-    private fun eventJson(event: EngineEvent): String? {
-        val at = event.at.inWholeMilliseconds / 1000.0
-        return when (event) {
-            is EngineEvent.TaskStarted -> jsonLine("event" to "task_started", "at" to at, "id" to event.id, "parent" to event.parent, "task" to event.label, "vehicles" to event.vehicles.joinToString(","))
-            is EngineEvent.TaskCompleted -> jsonLine("event" to "task_done", "at" to at, "id" to event.id, "task" to event.label)
-            is EngineEvent.TaskFailed -> jsonLine("event" to "task_failed", "at" to at, "id" to event.id, "task" to event.label, "error" to event.error.message)
-            is EngineEvent.TaskCancelled -> jsonLine("event" to "task_cancelled", "at" to at, "id" to event.id, "task" to event.label)
-            is EngineEvent.Flying -> jsonLine("event" to "flying", "at" to at, "task" to event.task, "vehicle" to event.vehicle, "mission" to event.mission.name, "steps" to event.mission.steps.size)
-            is EngineEvent.Mission -> when (val e = event.event) {
-                is MissionEvent.StepStarted -> null
-                else -> jsonLine("event" to "mission", "at" to at, "task" to event.task, "vehicle" to event.vehicle, "what" to e.toString())
-            }
-            is EngineEvent.MadeSafe -> jsonLine("event" to "made_safe", "at" to at, "vehicle" to event.vehicle, "state" to event.state.name, "confirmed" to event.confirmed)
-            is EngineEvent.Picked -> jsonLine("event" to "picked", "at" to at, "vehicles" to event.vehicles.joinToString(","))
-            is EngineEvent.Released -> jsonLine("event" to "released", "at" to at, "vehicles" to event.vehicles.joinToString(","))
-            is EngineEvent.Message -> jsonLine("event" to "message", "at" to at, "text" to event.text)
-        }
     }
 }

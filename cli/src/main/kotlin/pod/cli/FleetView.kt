@@ -5,7 +5,7 @@ import pod.mavlink.FleetEvent
 import pod.mavlink.MavlinkVehicle
 import java.util.Locale
 
-/** Renders a fleet for people (a table) and for scripts (JSON lines). */
+/** Renders a fleet for people (a table); pod.cli.json has the JSON lines for scripts. */
 internal object FleetView {
 
     fun table(vehicles: Collection<MavlinkVehicle>): List<String> {
@@ -40,37 +40,5 @@ internal object FleetView {
             is FleetEvent.Lost -> "LOST vehicle ${id.systemId}: silent for ${event.silence.inWholeMilliseconds} ms"
             is FleetEvent.Regained -> "regained vehicle ${id.systemId}"
         }
-    }
-
-    fun eventJson(event: FleetEvent): String {
-        val id = event.vehicle.identity.value
-        val name = when (event) {
-            is FleetEvent.Found -> "found"
-            is FleetEvent.Lost -> "lost"
-            is FleetEvent.Regained -> "regained"
-        }
-        return jsonLine(
-            "event" to name, "sysid" to id.systemId, "compid" to id.componentId,
-            "type" to id.type.name, "autopilot" to id.autopilot.name,
-            "silence_ms" to (event as? FleetEvent.Lost)?.silence?.inWholeMilliseconds,
-        )
-    }
-
-    fun telemetryJson(v: MavlinkVehicle): String {
-        val t = v.telemetry
-        val pos = t.position.value
-        val battery = t.battery.value
-        val gps = t.gps.value
-        return jsonLine(
-            "event" to "telemetry", "sysid" to v.systemId,
-            "connected" to (v.connection.value == ConnectionState.CONNECTED),
-            "lat" to pos?.location?.latitude, "lon" to pos?.location?.longitude,
-            "alt_msl" to pos?.location?.altitude?.meters, "alt_rel" to pos?.relativeAltitude?.meters,
-            "heading" to pos?.heading?.degrees,
-            "battery" to battery?.remaining, "voltage" to battery?.voltage,
-            "mode" to t.mode.value?.name, "armed" to t.armed.value, "landed" to t.landedState.value.name,
-            "gps_fix" to gps?.fix?.name, "satellites" to gps?.satellites,
-            "link" to t.linkQuality.value.fraction, "lost_frames" to t.linkQuality.value.lost,
-        )
     }
 }

@@ -4,6 +4,9 @@ import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.onSubscription
 import kotlinx.coroutines.launch
+import pod.cli.json.EventJson
+import pod.cli.json.telemetryEvent
+import pod.cli.json.toEvent
 import pod.mavlink.FleetEvent
 import pod.mavlink.GroundStation
 import kotlin.time.Duration
@@ -29,7 +32,7 @@ internal class LiveView(
             gcs.events.onSubscription { gcs.vehicles.value.values.forEach { emit(FleetEvent.Found(it)) } }.collect { event ->
                 if (event is FleetEvent.Found && !announced.add(event.vehicle.systemId)) return@collect
                 if (json) {
-                    out.line(FleetView.eventJson(event))
+                    out.line(EventJson.encode(event.toEvent()))
                 } else {
                     val line = FleetView.eventLine(event)
                     if (redraw) remember(line) else out.line(line)
@@ -47,7 +50,7 @@ internal class LiveView(
     fun render(gcs: GroundStation) {
         val vehicles = gcs.vehicles.value.values
         if (json) {
-            vehicles.sortedBy { it.systemId }.forEach { out.line(FleetView.telemetryJson(it)) }
+            vehicles.sortedBy { it.systemId }.forEach { out.line(EventJson.encode(telemetryEvent(it))) }
             return
         }
         val table = FleetView.table(vehicles)

@@ -8,6 +8,7 @@ import com.github.ajalt.clikt.parameters.options.default
 import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.choice
+import pod.cli.json.Event
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.mission.InvalidMission
 import pod.mavlink.mission.MissionType
@@ -44,7 +45,7 @@ internal abstract class MissionAction(out: Output, name: String) : VehicleComman
             if (p.done != last) {
                 last = p.done
                 when {
-                    json -> out.line(jsonLine("event" to "progress", "action" to action, "done" to p.done, "total" to p.total))
+                    json -> emit(Event.Progress(action, p.done, p.total))
                     terminal -> print("\r$action ${bar(p)}")
                     p.done == p.total || p.total == 0 || p.done * 4 / p.total != (p.done - 1) * 4 / p.total ->
                         out.line("$action ${bar(p)}")
@@ -87,7 +88,7 @@ internal class MissionUpload(out: Output) : MissionAction(out, "upload") {
         val list = type.name.lowercase()
         finish(
             if (items.isEmpty()) "uploaded an empty $list list: cleared the $list list of vehicle ${vehicle.systemId}" else "uploaded ${items(items.size, type)} to vehicle ${vehicle.systemId}",
-            "action" to "upload", "items" to items.size, "sysid" to vehicle.systemId,
+            vehicle, action = "upload", items = items.size,
         )
     }
 }
@@ -110,7 +111,7 @@ internal class MissionDownload(out: Output) : MissionAction(out, "download") {
         } catch (e: IOException) {
             fail("cannot write $file: ${e.message}")
         }
-        finish("downloaded ${items(items.size, type)} from vehicle ${vehicle.systemId} to $file", "action" to "download", "items" to items.size, "sysid" to vehicle.systemId)
+        finish("downloaded ${items(items.size, type)} from vehicle ${vehicle.systemId} to $file", vehicle, action = "download", items = items.size)
     }
 }
 
@@ -120,7 +121,7 @@ internal class MissionClear(out: Output) : MissionAction(out, "clear") {
 
     override suspend fun act(vehicle: MavlinkVehicle) {
         vehicle.mission.clear(type)
-        finish("cleared the ${type.name.lowercase()} list of vehicle ${vehicle.systemId}", "action" to "clear", "sysid" to vehicle.systemId)
+        finish("cleared the ${type.name.lowercase()} list of vehicle ${vehicle.systemId}", vehicle, action = "clear", items = 0)
     }
 }
 

@@ -37,7 +37,7 @@ internal class ParamGet(out: Output) : VehicleCommandBase(out, "get") {
 
     override suspend fun act(vehicle: MavlinkVehicle) {
         val p = vehicle.params.read(name)
-        finish(p.text(), "action" to "param-get", "sysid" to vehicle.systemId, "name" to p.name, "value" to p.value, "type" to p.type.name)
+        finish(p.text(), vehicle, action = "param-get", param = p)
     }
 }
 
@@ -54,6 +54,6 @@ internal class ParamSet(out: Output) : VehicleCommandBase(out, "set") {
 
     override suspend fun act(vehicle: MavlinkVehicle) {
         val p = vehicle.params.write(name, value)
-        finish(p.text(), "action" to "param-set", "sysid" to vehicle.systemId, "name" to p.name, "value" to p.value, "type" to p.type.name)
+        finish(p.text(), vehicle, action = "param-set", param = p)
     }
 }

@@ -11,6 +11,8 @@ import com.github.ajalt.clikt.parameters.types.int
 import com.github.ajalt.clikt.parameters.types.restrictTo
 import kotlinx.coroutines.awaitCancellation
 import kotlinx.coroutines.runBlocking
+import pod.cli.json.Event
+import pod.cli.json.EventJson
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleType
 import pod.mavlink.link.LinkAddress
@@ -51,8 +53,7 @@ internal class SimCommand(private val out: Output) : CliktCommand(name = "sim") 
             val own = LinkAddress.parse(c.gcs)
             out.line(
                 if (json) {
-                    jsonLine("event" to "started", "sysid" to c.systemId, "type" to c.type.name, "autopilot" to c.autopilot.name,
-                        "local_port" to v.localPort, "out" to own.toString())
+                    EventJson.encode(Event.Started(c.systemId, c.type.name, c.autopilot.name, v.localPort, own.toString()))
                 } else {
                     "vehicle ${c.systemId}: ${c.type.name.lowercase()} on ${c.autopilot.name.lowercase()}, " +
                         if (own is LinkAddress.UdpIn) "listening on ${own.copy(port = v.localPort ?: own.port)}" else "sending from port ${v.localPort} to $own"

@@ -16,6 +16,8 @@ import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeout
 import kotlinx.coroutines.withTimeoutOrNull
+import pod.cli.json.Event
+import pod.cli.json.EventJson
 import pod.core.vehicle.VehicleLost
 import pod.launch.Interruption
 import pod.launch.Interrupted
@@ -25,6 +27,7 @@ import pod.mavlink.action.ActionException
 import pod.mavlink.command.CommandException
 import pod.mavlink.mission.MissionException
 import pod.mavlink.param.ParamException
+import pod.mavlink.param.Parameter
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
 
@@ -108,28 +111,45 @@ internal abstract class VehicleCommandBase(protected val out: Output, name: Stri
         }
         val t = vehicle.telemetry
         val how = outcome.getOrElse { "NOT confirmed safe: ${it.message ?: it}" }
-        out.line(
-            if (json) {
-                jsonLine(
-                    "event" to "interrupted", "signal" to signal, "sysid" to vehicle.systemId, "safe" to outcome.isSuccess, "state" to how,
-                    "mode" to t.mode.value?.name, "armed" to t.armed.value, "relative_alt_m" to t.position.value?.relativeAltitude?.meters,
-                )
-            } else {
-                "interrupted by $signal: vehicle ${vehicle.systemId} $how (mode ${t.mode.value?.name ?: "unknown"}, ${if (t.armed.value) "armed" else "disarmed"})"
-            },
-        )
+        if (json) {
+            emit(
+                Event.Interrupted(
+                    signal = signal, sysid = vehicle.systemId, safe = outcome.isSuccess, state = how,
+                    mode = t.mode.value?.name, armed = t.armed.value, relativeAltM = t.position.value?.relativeAltitude?.meters,
+                ),
+            )
+        } else {
+            out.line("interrupted by $signal: vehicle ${vehicle.systemId} $how (mode ${t.mode.value?.name ?: "unknown"}, ${if (t.armed.value) "armed" else "disarmed"})")
+        }
         throw CliktError("pod: stopped by $signal", statusCode = Interruption.EXIT_CODE)
     }
 
     protected fun fail(message: String): Nothing {
-        if (json) out.line(jsonLine("event" to "error", "message" to message))
+        if (json) emit(Event.Error(message))
         throw CliktError("error: $message", statusCode = Exit.FAILED)
     }
 
-    /** The closing line: [text] for people, a `done` JSON object with [json] fields for scripts. */
-    protected fun finish(text: String, vararg json: Pair<String, Any?>) {
-        if (System.console() != null && !this.json) println()
-        out.line(if (this.json) jsonLine("event" to "done", *json) else text)
+    /** Prints [event] as a JSON line (callers print it only with `--json`). */
+    protected fun emit(event: Event) {
+        out.line(EventJson.encode(event))
+    }
+
+    /**
+     * The closing line: [text] for people; for scripts a `done` event naming [action], with
+     * [vehicle]'s mode, armed state and altitude as the command ends, and what the command
+     * concerned: the list's [items], the [param] read or written.
+     */
+    protected fun finish(text: String, vehicle: MavlinkVehicle, action: String, items: Int? = null, param: Parameter? = null) {
+        if (System.console() != null && !json) println()
+        if (!json) return out.line(text)
+        val t = vehicle.telemetry
+        emit(
+            Event.Done(
+                action = action, sysid = vehicle.systemId, mode = t.mode.value?.name, armed = t.armed.value,
+                relativeAltM = t.position.value?.relativeAltitude?.meters,
+                items = items, name = param?.name, value = param?.value, type = param?.type?.name,
+            ),
+        )
     }
 
     private companion object {

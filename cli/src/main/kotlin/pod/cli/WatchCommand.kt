@@ -8,6 +8,8 @@ import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
 import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.withTimeoutOrNull
+import pod.cli.json.Event
+import pod.cli.json.EventJson
 import pod.mavlink.GroundStation
 import pod.mavlink.GroundStationConfig
 import kotlin.time.Duration
@@ -31,7 +33,7 @@ internal class WatchCommand(private val out: Output) : CliktCommand(name = "watc
         }
         val view = LiveView(out, json)
         if (json) {
-            out.line(jsonLine("event" to "listening", "address" to gcs.link.address.toString(), "port" to gcs.link.localPort))
+            out.line(EventJson.encode(Event.Listening(gcs.link.address.toString(), gcs.link.localPort)))
         } else {
             view.note("listening on ${gcs.link.address} (local port ${gcs.link.localPort})")
         }

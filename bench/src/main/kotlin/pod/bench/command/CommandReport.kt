@@ -1,7 +1,14 @@
 package pod.bench.command
 
+import kotlinx.serialization.json.JsonNull
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.add
+import kotlinx.serialization.json.buildJsonObject
+import kotlinx.serialization.json.put
+import kotlinx.serialization.json.putJsonArray
+import kotlinx.serialization.json.putJsonObject
+import pod.bench.JsonText
 import pod.bench.JsonText.num
-import pod.bench.JsonText.str
 import java.util.Locale
 import kotlin.time.Duration
 
@@ -74,32 +81,62 @@ object CommandReport {
         appendLine(fmt("Harness wall time %.1f min.", wall.inWholeMilliseconds / 60_000.0))
     }
 
-    fun json(r: CommandResults, wall: Duration): String = buildString {
-        val o = r.options
-        append("{\n  \"wallSeconds\": ${num(wall.inWholeMilliseconds / 1e3)},\n")
-        append(
-            "  \"settings\": {\"gapMs\": ${o.gap.inWholeMilliseconds}, \"pythonResendMs\": ${o.pythonResend.inWholeMilliseconds}, " +
-                "\"podWarmUpRounds\": ${o.podWarmUpRounds}, \"seed\": ${o.seed}, \"fleetReady\": ${str(r.fleetReady)}},\n",
-        )
-        append("  \"runs\": [\n")
-        append(
-            r.runs.joinToString(",\n") { run ->
-                val c = run.case
-                val s = run.split
-                "    {\"station\": ${str(run.station.name)}, \"vehicles\": ${c.vehicles}, \"lossPercent\": ${c.lossPercent}, " +
-                    "\"rounds\": ${run.rounds.size}, \"warmUpRounds\": ${c.warmUp}, \"setupError\": ${run.setupError?.let(::str) ?: "null"}, " +
-                    "\"discoverySeconds\": ${run.discoverySeconds?.let(::num) ?: "null"}, " +
-                    "\"commands\": ${run.commands}, \"acknowledged\": ${run.acknowledged}, \"failures\": ${run.failures}, \"resends\": ${run.resends}, " +
-                    "\"latencyMs\": {\"median\": ${num(run.latencyMs(50.0))}, \"p90\": ${num(run.latencyMs(90.0))}, \"p99\": ${num(run.latencyMs(99.0))}, \"max\": ${num(run.maxMs)}}, " +
-                    "\"makespanMedianMs\": ${num(run.medianMakespanMs)}, \"commandsPerSecond\": ${num(run.commandsPerSecond)}, " +
-                    "\"makespansMs\": [${run.rounds.joinToString { num(it.makespanUs / 1e3) }}], " +
-                    "\"latenciesMs\": [${run.latencies.joinToString { num(it / 1e3) }}], " +
-                    "\"podSplitMs\": ${if (s == null) "null" else "{\"samples\": ${s.samples}, \"callerToLink\": ${num(s.toSocketUs / 1e3)}, \"linkSend\": ${num(s.socketSendUs / 1e3)}, \"wire\": ${num(s.wireUs / 1e3)}, \"ackToCaller\": ${num(s.toCallerUs / 1e3)}}"}, " +
-                    "\"gcsCpuSeconds\": ${run.gcsCpuSeconds?.let(::num) ?: "null"}, \"fleetCpuSeconds\": ${run.fleetCpuSeconds?.let(::num) ?: "null"}, " +
-                    "\"errors\": [${run.errors.joinToString { str(it) }}], \"droppedToGcs\": ${run.droppedToGcs}, \"droppedToVehicle\": ${run.droppedToVehicle}}"
-            },
-        )
-        append("\n  ]\n}\n")
+    fun json(r: CommandResults, wall: Duration): String = JsonText.pretty.encodeToString(
+        JsonObject.serializer(),
+        buildJsonObject {
+            val o = r.options
+            put("wallSeconds", num(wall.inWholeMilliseconds / 1e3))
+            putJsonObject("settings") {
+                put("gapMs", o.gap.inWholeMilliseconds)
+                put("pythonResendMs", o.pythonResend.inWholeMilliseconds)
+                put("podWarmUpRounds", o.podWarmUpRounds)
+                put("seed", o.seed)
+                put("fleetReady", r.fleetReady)
+            }
+            putJsonArray("runs") { r.runs.forEach { add(runJson(it)) } }
+        },
+    ) + "\n"
+
+    private fun runJson(run: CommandRun): JsonObject = buildJsonObject {
+        val c = run.case
+        val s = run.split
+        put("station", run.station.name)
+        put("vehicles", c.vehicles)
+        put("lossPercent", c.lossPercent)
+        put("rounds", run.rounds.size)
+        put("warmUpRounds", c.warmUp)
+        put("setupError", run.setupError)
+        put("discoverySeconds", num(run.discoverySeconds))
+        put("commands", run.commands)
+        put("acknowledged", run.acknowledged)
+        put("failures", run.failures)
+        put("resends", run.resends)
+        putJsonObject("latencyMs") {
+            put("median", num(run.latencyMs(50.0)))
+            put("p90", num(run.latencyMs(90.0)))
+            put("p99", num(run.latencyMs(99.0)))
+            put("max", num(run.maxMs))
+        }
+        put("makespanMedianMs", num(run.medianMakespanMs))
+        put("commandsPerSecond", num(run.commandsPerSecond))
+        putJsonArray("makespansMs") { run.rounds.forEach { add(num(it.makespanUs / 1e3)) } }
+        putJsonArray("latenciesMs") { run.latencies.forEach { add(num(it / 1e3)) } }
+        if (s == null) {
+            put("podSplitMs", JsonNull)
+        } else {
+            putJsonObject("podSplitMs") {
+                put("samples", s.samples)
+                put("callerToLink", num(s.toSocketUs / 1e3))
+                put("linkSend", num(s.socketSendUs / 1e3))
+                put("wire", num(s.wireUs / 1e3))
+                put("ackToCaller", num(s.toCallerUs / 1e3))
+            }
+        }
+        put("gcsCpuSeconds", num(run.gcsCpuSeconds))
+        put("fleetCpuSeconds", num(run.fleetCpuSeconds))
+        putJsonArray("errors") { run.errors.forEach { add(it) } }
+        put("droppedToGcs", run.droppedToGcs)
+        put("droppedToVehicle", run.droppedToVehicle)
     }
 
     fun describe(run: CommandRun): String =

@@ -7,6 +7,10 @@ import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.withTimeout
+import kotlinx.serialization.json.JsonObjectBuilder
+import kotlinx.serialization.json.buildJsonObject
+import kotlinx.serialization.json.put
+import pod.bench.JsonText
 import pod.bench.RelayedVehicle
 import pod.bench.percentile
 import pod.mavlink.GroundStation
@@ -14,7 +18,6 @@ import pod.mavlink.GroundStationConfig
 import pod.mavlink.link.MavlinkLink
 import pod.sim.SimFleet
 import pod.sim.SimVehicleConfig
-import java.util.Locale
 import kotlin.concurrent.thread
 import kotlin.system.exitProcess
 import kotlin.time.Duration
@@ -47,7 +50,7 @@ fun main(args: Array<String>) {
     val input = System.`in`.bufferedReader()
     runBlocking(Dispatchers.Default) {
         val warm = warmUp()
-        emit("{\"event\": \"ready\", \"warmUpSeconds\": ${fmt(warm.first)}, \"warmUpMedianMs\": ${fmt(warm.second)}}")
+        emit("ready") { put("warmUpSeconds", JsonText.num(warm.first)); put("warmUpMedianMs", JsonText.num(warm.second)) }
         var fleet: RunningFleet? = null
         while (true) {
             // Blocking read on this coroutine's thread is fine: nothing else needs it between commands.
@@ -59,20 +62,20 @@ fun main(args: Array<String>) {
                         check(fleet == null) { "a fleet is already running" }
                         val (n, loss, seed, port) = words.drop(1).map { it.toLong() }
                         fleet = RunningFleet.start(this, n.toInt(), loss / 100.0, seed, port.toInt())
-                        emit("{\"event\": \"started\", \"vehicles\": $n}")
+                        emit("started") { put("vehicles", n) }
                     }
                     "stop" -> {
                         val f = fleet
                         fleet = null
                         f?.stop()
-                        emit("{\"event\": \"stopped\", \"droppedToGcs\": ${f?.droppedToGcs ?: 0}, \"droppedToVehicle\": ${f?.droppedToVehicle ?: 0}}")
+                        emit("stopped") { put("droppedToGcs", f?.droppedToGcs ?: 0); put("droppedToVehicle", f?.droppedToVehicle ?: 0) }
                     }
-                    "cpu" -> emit("{\"event\": \"cpu\", \"seconds\": ${String.format(Locale.ROOT, "%.6f", processCpuSeconds())}}")
+                    "cpu" -> emit("cpu") { put("seconds", processCpuSeconds()) }
                     "" -> {}
                     else -> error("unknown command '${words[0]}'")
                 }
             } catch (e: Exception) {
-                emit("{\"event\": \"error\", \"message\": \"${e.toString().replace("\"", "'")}\"}")
+                emit("error") { put("message", e.toString()) }
             }
         }
         fleet?.stop()
@@ -85,12 +88,11 @@ fun main(args: Array<String>) {
 fun processCpuSeconds(): Double =
     (java.lang.management.ManagementFactory.getOperatingSystemMXBean() as com.sun.management.OperatingSystemMXBean).processCpuTime / 1e9
 
-private fun emit(json: String) {
-    println(json)
+/** Prints one flat JSON object, its kind in "event" first, then what [fields] puts. */
+private fun emit(event: String, fields: JsonObjectBuilder.() -> Unit = {}) {
+    println(buildJsonObject { put("event", event); fields() })
     System.out.flush()
 }
-
-private fun fmt(v: Double) = String.format(Locale.ROOT, "%.3f", v)
 
 /** Rounds of the fleet process's own warm-up. */
 private const val WARM_UP_ROUNDS = 300

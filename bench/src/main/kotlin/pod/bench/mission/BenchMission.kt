@@ -1,6 +1,10 @@
 package pod.bench.mission
 
 import kotlinx.coroutines.CoroutineScope
+import kotlinx.serialization.json.JsonArray
+import kotlinx.serialization.json.addJsonObject
+import kotlinx.serialization.json.buildJsonArray
+import kotlinx.serialization.json.put
 import pod.bench.RelayedVehicle
 import pod.core.vehicle.Autopilot
 import pod.mavlink.mission.MissionItem
@@ -51,13 +55,32 @@ fun missionMismatch(autopilot: Autopilot, sent: List<MissionItem>, back: List<Mi
     return null
 }
 
-/** The items as the JSON array bench/mavsdk_mission.py reads (MISSION_ITEM_INT field names). */
-fun List<MissionItem>.toMavsdkJson(): String = joinToString(",\n", "[\n", "\n]\n") {
-    fun f(v: Float) = v.toDouble().toString()
-    "{\"seq\":${it.seq},\"frame\":${it.frame},\"command\":${it.command}," +
-        "\"current\":${if (it.current) 1 else 0},\"autocontinue\":${if (it.autocontinue) 1 else 0}," +
-        "\"param1\":${f(it.param1)},\"param2\":${f(it.param2)},\"param3\":${f(it.param3)},\"param4\":${f(it.param4)}," +
-        "\"x\":${it.x},\"y\":${it.y},\"z\":${f(it.z)},\"mission_type\":${it.missionType.mavValue}}"
+/**
+ * The items as the JSON array bench/mavsdk_mission.py reads (MISSION_ITEM_INT field names). Floats
+ * go as the exact double of the float (NaN as NaN, which Python's json reads), so Python's float →
+ * float32 gives them back exactly.
+ */
+fun List<MissionItem>.toMavsdkJson(): String = missionItemsJson(this).toString() + "\n"
+
+/** [items] as a JSON array of MISSION_ITEM_INT objects. */
+fun missionItemsJson(items: List<MissionItem>): JsonArray = buildJsonArray {
+    for (item in items) {
+        addJsonObject {
+            put("seq", item.seq)
+            put("frame", item.frame)
+            put("command", item.command)
+            put("current", if (item.current) 1 else 0)
+            put("autocontinue", if (item.autocontinue) 1 else 0)
+            put("param1", item.param1.toDouble())
+            put("param2", item.param2.toDouble())
+            put("param3", item.param3.toDouble())
+            put("param4", item.param4.toDouble())
+            put("x", item.x)
+            put("y", item.y)
+            put("z", item.z.toDouble())
+            put("mission_type", item.missionType.mavValue)
+        }
+    }
 }
 
 /** An "item" event of bench/mavsdk_mission.py as a [MissionItem]. */

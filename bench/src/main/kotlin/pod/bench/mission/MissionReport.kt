@@ -1,7 +1,16 @@
 package pod.bench.mission
 
+import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.JsonNull
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.add
+import kotlinx.serialization.json.addJsonObject
+import kotlinx.serialization.json.buildJsonObject
+import kotlinx.serialization.json.put
+import kotlinx.serialization.json.putJsonArray
+import kotlinx.serialization.json.putJsonObject
+import pod.bench.JsonText
 import pod.bench.JsonText.num
-import pod.bench.JsonText.str
 import pod.bench.percentile
 import java.util.Locale
 import kotlin.time.Duration
@@ -79,37 +88,57 @@ object MissionReport {
         ?: run.mismatch?.let { "download differs: $it" }
         ?: "?"
 
-    fun json(r: MissionResults, wall: Duration): String = buildString {
-        val o = r.options
-        append("{\n  \"wallSeconds\": ${num(wall.inWholeMilliseconds / 1e3)},\n")
-        append(
-            "  \"settings\": {\"sizes\": ${o.sizes}, \"lossPercents\": ${o.lossPercents}, \"flavours\": ${o.flavours.map { str(it.name) }}, " +
-                "\"successRuns\": ${o.successRuns}, \"successItems\": ${o.successItems}, \"successLossPercent\": ${o.successLossPercent}, " +
-                "\"discoveryLimitSeconds\": ${o.limits.discovery.inWholeSeconds}, \"transferLimitSeconds\": ${o.limits.transfer.inWholeSeconds}, \"seed\": ${o.seed}, " +
-                "\"podMinTimeoutMs\": ${o.timing.minTimeout.inWholeMilliseconds}, \"podInitialTimeoutMs\": ${o.timing.initialTimeout.inWholeMilliseconds}},\n",
-        )
-        append("  \"floor\": [\n")
-        append(
-            r.floor.joinToString(",\n") {
-                "    {\"path\": ${str(it.path)}, \"samples\": ${it.samples.size}, \"lost\": ${it.lost}, " +
-                    "\"medianMs\": ${num(it.medianMs)}, \"p99Ms\": ${num(it.p99Ms)}}"
-            },
-        )
-        append("\n  ],\n  \"grid\": [\n")
-        append(r.grid.joinToString(",\n") { "    " + runJson(it) })
-        append("\n  ],\n  \"successRate\": [\n")
-        append(r.success.joinToString(",\n") { "    " + runJson(it) })
-        append("\n  ]\n}\n")
+    fun json(r: MissionResults, wall: Duration): String = JsonText.pretty.encodeToString(
+        JsonObject.serializer(),
+        buildJsonObject {
+            val o = r.options
+            put("wallSeconds", num(wall.inWholeMilliseconds / 1e3))
+            putJsonObject("settings") {
+                putJsonArray("sizes") { o.sizes.forEach { add(it) } }
+                putJsonArray("lossPercents") { o.lossPercents.forEach { add(it) } }
+                putJsonArray("flavours") { o.flavours.forEach { add(it.name) } }
+                put("successRuns", o.successRuns)
+                put("successItems", o.successItems)
+                put("successLossPercent", o.successLossPercent)
+                put("discoveryLimitSeconds", o.limits.discovery.inWholeSeconds)
+                put("transferLimitSeconds", o.limits.transfer.inWholeSeconds)
+                put("seed", o.seed)
+                put("podMinTimeoutMs", o.timing.minTimeout.inWholeMilliseconds)
+                put("podInitialTimeoutMs", o.timing.initialTimeout.inWholeMilliseconds)
+            }
+            putJsonArray("floor") {
+                for (f in r.floor) {
+                    addJsonObject {
+                        put("path", f.path)
+                        put("samples", f.samples.size)
+                        put("lost", f.lost)
+                        put("medianMs", num(f.medianMs))
+                        put("p99Ms", num(f.p99Ms))
+                    }
+                }
+            }
+            putJsonArray("grid") { r.grid.forEach { add(runJson(it)) } }
+            putJsonArray("successRate") { r.success.forEach { add(runJson(it)) } }
+        },
+    ) + "\n"
+
+    private fun runJson(t: TransferRun): JsonObject = buildJsonObject {
+        put("station", t.station.name)
+        put("flavour", t.cell.flavour.name)
+        put("items", t.cell.items)
+        put("lossPercent", t.cell.lossPercent)
+        put("seed", t.seed)
+        put("upload", stepJson(t.upload))
+        put("download", stepJson(t.download))
+        put("verified", t.verified)
+        put("mismatch", t.mismatch)
+        put("setupError", t.setupError)
+        put("droppedToGcs", t.droppedToGcs)
+        put("droppedToVehicle", t.droppedToVehicle)
     }
 
-    private fun runJson(t: TransferRun): String =
-        "{\"station\": ${str(t.station.name)}, \"flavour\": ${str(t.cell.flavour.name)}, \"items\": ${t.cell.items}, " +
-            "\"lossPercent\": ${t.cell.lossPercent}, \"seed\": ${t.seed}, \"upload\": ${stepJson(t.upload)}, " +
-            "\"download\": ${stepJson(t.download)}, \"verified\": ${t.verified}, \"mismatch\": ${t.mismatch?.let(::str) ?: "null"}, " +
-            "\"setupError\": ${t.setupError?.let(::str) ?: "null"}, \"droppedToGcs\": ${t.droppedToGcs}, \"droppedToVehicle\": ${t.droppedToVehicle}}"
-
-    private fun stepJson(s: Step?): String =
-        if (s == null) "null" else "{\"ok\": ${s.ok}, \"seconds\": ${num(s.seconds)}, \"error\": ${s.error?.let(::str) ?: "null"}}"
+    private fun stepJson(s: Step?): JsonElement =
+        if (s == null) JsonNull else buildJsonObject { put("ok", s.ok); put("seconds", num(s.seconds)); put("error", s.error) }
 
     private fun fmt(format: String, vararg args: Any?): String = String.format(Locale.ROOT, format, *args)
 }

@@ -7,6 +7,13 @@ import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldHaveSize
 import io.kotest.matchers.ints.shouldBeGreaterThan
 import io.kotest.matchers.shouldBe
+import kotlinx.serialization.json.Json
+import kotlinx.serialization.json.JsonArray
+import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.JsonPrimitive
+import kotlinx.serialization.json.jsonArray
+import kotlinx.serialization.json.jsonObject
+import kotlinx.serialization.json.jsonPrimitive
 import java.lang.reflect.ParameterizedType
 import java.math.BigInteger
 
@@ -81,7 +88,7 @@ private class Vector(
     val componentId: Int,
     val sequence: Int,
     val name: String,
-    val fields: Map<String, Any?>,
+    val fields: Map<String, JsonElement>,
     val hex: String,
 ) {
     val wire: ByteArray = hex.hexToBytes()
@@ -104,25 +111,24 @@ private class Vector(
         return values
     }
 
-    private fun isZero(json: Any?): Boolean = when (json) {
-        is MiniJson.Number -> json.text.toDouble() == 0.0
-        is String -> json.isEmpty()
-        is List<*> -> json.all { isZero(it) }
+    private fun isZero(json: JsonElement): Boolean = when (json) {
+        is JsonArray -> json.all { isZero(it) }
+        is JsonPrimitive -> if (json.isString) json.content.isEmpty() else json.content.toDouble() == 0.0
         else -> false
     }
 
-    private fun convert(field: TestMessages.Field, json: Any?): Any = when (val type = field.type) {
+    private fun convert(field: TestMessages.Field, json: JsonElement): Any = when (val type = field.type) {
         Int::class.javaPrimitiveType -> number(json).toInt()
         Long::class.javaPrimitiveType -> number(json).toLong()
         Float::class.javaPrimitiveType -> number(json).toDouble().toFloat()
         Double::class.javaPrimitiveType -> number(json).toDouble()
         BigInteger::class.java -> BigInteger(number(json))
-        String::class.java -> json as String
-        ByteArray::class.java -> (json as List<*>).map { number(it).toInt().toByte() }.toByteArray()
+        String::class.java -> json.jsonPrimitive.also { require(it.isString) { "${field.name}: not a string: $it" } }.content
+        ByteArray::class.java -> json.jsonArray.map { number(it).toInt().toByte() }.toByteArray()
         is ParameterizedType -> if (type.rawType == EnumValue::class.java) {
             TestMessages.enumValue(field, number(json).toLong().toInt())
         } else {
-            (json as List<*>).map {
+            json.jsonArray.map {
                 when (type.actualTypeArguments[0]) {
                     Int::class.javaObjectType -> number(it).toInt()
                     Long::class.javaObjectType -> number(it).toLong()
@@ -134,14 +140,14 @@ private class Vector(
         else -> error("unsupported ${type.typeName}")
     }
 
-    private fun number(json: Any?): String = (json as MiniJson.Number).text
+    /** A JSON number exactly as written, so that each field converts it exactly to its own type. */
+    private fun number(json: JsonElement): String = json.jsonPrimitive.also { require(!it.isString) { "not a number: $it" } }.content
 
     companion object {
         fun parse(numbered: Pair<Int, String>): Vector {
             val (line, text) = numbered
             val columns = text.split('\t')
             require(columns.size == 7) { "line $line: expected 7 columns, got ${columns.size}" }
-            @Suppress("UNCHECKED_CAST")
             return Vector(
                 line = line,
                 version = columns[0].toInt(),
@@ -149,7 +155,7 @@ private class Vector(
                 componentId = columns[2].toInt(),
                 sequence = columns[3].toInt(),
                 name = columns[4],
-                fields = MiniJson.parse(columns[5]) as Map<String, Any?>,
+                fields = Json.parseToJsonElement(columns[5]).jsonObject,
                 hex = columns[6],
             )
         }

@@ -1,0 +1,179 @@
+package pod.cli.json
+
+import kotlinx.serialization.SerialName
+import kotlinx.serialization.Serializable
+
+/**
+ * One line of `pod … --json` output: a JSON object whose `event` field names the kind. Every
+ * field of a kind is always printed (`null` when unknown or not applicable), in the order
+ * declared here; field names are snake_case. Encode and decode with [EventJson].
+ *
+ * Units: times in seconds unless the name says `_ms`; latitudes and longitudes in degrees;
+ * altitudes in metres; fractions (battery, link) from 0 to 1. A number that is not finite is
+ * written as `null`.
+ */
+@Serializable
+public sealed interface Event {
+
+    // ---- pod watch, pod demo: the fleet on a link ----
+
+    /** `pod watch` opened its link: [address] as given, [port] the local UDP or TCP port. */
+    @Serializable @SerialName("listening")
+    public data class Listening(val address: String, val port: Int) : Event
+
+    /** A vehicle was heard for the first time. [type] and [autopilot] are Pod's enum names (QUADROTOR, ARDUPILOT…). */
+    @Serializable @SerialName("found")
+    public data class Found(val sysid: Int, val compid: Int, val type: String, val autopilot: String) : Event
+
+    /** A vehicle has been silent for [silenceMs] milliseconds (`--lost-after`). */
+    @Serializable @SerialName("lost")
+    public data class Lost(
+        val sysid: Int,
+        val compid: Int,
+        val type: String,
+        val autopilot: String,
+        @SerialName("silence_ms") val silenceMs: Long,
+    ) : Event
+
+    /** A lost vehicle is heard again. */
+    @Serializable @SerialName("regained")
+    public data class Regained(val sysid: Int, val compid: Int, val type: String, val autopilot: String) : Event
+
+    /**
+     * A vehicle's latest state, once per vehicle per period. Position fields are null until the
+     * vehicle reports a position; [gpsFix] names MAVLink's GPS_FIX_TYPE (`FIX_3D`), null outside it; [link] the fraction of its
+     * frames that arrived and [lostFrames] how many did not.
+     */
+    @Serializable @SerialName("telemetry")
+    public data class Telemetry(
+        val sysid: Int,
+        val connected: Boolean,
+        val lat: Finite?,
+        val lon: Finite?,
+        @SerialName("alt_msl") val altMsl: Finite?,
+        @SerialName("alt_rel") val altRel: Finite?,
+        val heading: Finite?,
+        val battery: Finite?,
+        val voltage: Finite?,
+        val mode: String?,
+        val armed: Boolean,
+        val landed: String,
+        @SerialName("gps_fix") val gpsFix: String?,
+        val satellites: Int?,
+        val link: Finite?,
+        @SerialName("lost_frames") val lostFrames: Long,
+    ) : Event
+
+    // ---- pod sim ----
+
+    /** `pod sim` started a vehicle that sends from [localPort] (null before its socket is bound) to [out]. */
+    @Serializable @SerialName("started")
+    public data class Started(
+        val sysid: Int,
+        val type: String,
+        val autopilot: String,
+        @SerialName("local_port") val localPort: Int?,
+        val out: String,
+    ) : Event
+
+    // ---- commands to one vehicle (arm, takeoff, mission …, param …) ----
+
+    /** The vehicle is not ready yet and the command waits: [reason] says for what (printed once per reason). */
+    @Serializable @SerialName("waiting")
+    public data class Waiting(val sysid: Int, @SerialName("for") val reason: String) : Event
+
+    /** A mission transfer moved on: [done] of [total] items ([action] is `uploading` or `downloading`). */
+    @Serializable @SerialName("progress")
+    public data class Progress(val action: String, val done: Int, val total: Int) : Event
+
+    /**
+     * The command did what was asked; the last line. [action] names the command (`arm`, `takeoff`,
+     * `upload`, `param-set`…). [mode], [armed] and [relativeAltM] are the vehicle's state as the
+     * command ends; [items] is the list's size after a mission command; [name], [value] and [type]
+     * are the parameter of `param get` / `param set`, as the vehicle reports it. Fields a command
+     * does not concern are null.
+     */
+    @Serializable @SerialName("done")
+    public data class Done(
+        val action: String,
+        val sysid: Int,
+        val mode: String?,
+        val armed: Boolean?,
+        @SerialName("relative_alt_m") val relativeAltM: Finite?,
+        val items: Int? = null,
+        val name: String? = null,
+        val value: Finite? = null,
+        val type: String? = null,
+    ) : Event
+
+    /** The command failed: the vehicle refused, did not answer or was lost. The same [message] goes to stderr. */
+    @Serializable @SerialName("error")
+    public data class Error(val message: String) : Event
+
+    /**
+     * Ctrl-C or SIGTERM stopped the command ([signal] is `SIGINT` or `SIGTERM`). For a vehicle
+     * command: [safe] says whether the vehicle confirmed the safe state described by [state], and
+     * [mode], [armed], [relativeAltM] are what it last reported. For `pod demo`: [map] is the SVG
+     * written so far and the vehicle fields are null.
+     */
+    @Serializable @SerialName("interrupted")
+    public data class Interrupted(
+        val signal: String,
+        val sysid: Int? = null,
+        val safe: Boolean? = null,
+        val state: String? = null,
+        val mode: String? = null,
+        val armed: Boolean? = null,
+        @SerialName("relative_alt_m") val relativeAltM: Finite? = null,
+        val map: String? = null,
+    ) : Event
+
+    // ---- pod demo: the program's events; [at] is vehicle time in seconds since it started ----
+
+    /** Task [id] (child of [parent], 0 for the root) labelled [task] started with [vehicles]. */
+    @Serializable @SerialName("task_started")
+    public data class TaskStarted(val at: Double, val id: Int, val parent: Int, val task: String, val vehicles: List<Int>) : Event
+
+    /** Task [id] completed. */
+    @Serializable @SerialName("task_done")
+    public data class TaskDone(val at: Double, val id: Int, val task: String) : Event
+
+    /** Task [id] failed with [error]. */
+    @Serializable @SerialName("task_failed")
+    public data class TaskFailed(val at: Double, val id: Int, val task: String, val error: String) : Event
+
+    /** Task [id] was cancelled (its condition fired, a deadline passed, a sibling failed, the program stopped). */
+    @Serializable @SerialName("task_cancelled")
+    public data class TaskCancelled(val at: Double, val id: Int, val task: String) : Event
+
+    /** Task [task] starts flying the mission named [mission] ([steps] steps) on [vehicle]. */
+    @Serializable @SerialName("flying")
+    public data class Flying(val at: Double, val task: Int, val vehicle: Int, val mission: String, val steps: Int) : Event
+
+    /**
+     * What [vehicle] reported while task [task] flew it: [what] is `uploaded` (with [steps], the
+     * mission's step count), `started`, `step_done` (with [step], the index of the step) or `completed`.
+     */
+    @Serializable @SerialName("mission")
+    public data class Mission(val at: Double, val task: Int, val vehicle: Int, val what: String, val step: Int?, val steps: Int?) : Event
+
+    /** [vehicle] was put in [state] (`HOLD` or `RETURN_HOME`) after its task ended early; [confirmed] is false when it did not confirm. */
+    @Serializable @SerialName("made_safe")
+    public data class MadeSafe(val at: Double, val vehicle: Int, val state: String, val confirmed: Boolean) : Event
+
+    /** The program picked [vehicles]. */
+    @Serializable @SerialName("picked")
+    public data class Picked(val at: Double, val vehicles: List<Int>) : Event
+
+    /** The program released [vehicles]. */
+    @Serializable @SerialName("released")
+    public data class Released(val at: Double, val vehicles: List<Int>) : Event
+
+    /** The program said [text]. */
+    @Serializable @SerialName("message")
+    public data class Message(val at: Double, val text: String) : Event
+
+    /** `pod demo` ended: [ok], or [error]; [map] is the SVG of missions and tracks. The last line. */
+    @Serializable @SerialName("demo_done")
+    public data class DemoDone(val ok: Boolean, val error: String?, val map: String) : Event
+}

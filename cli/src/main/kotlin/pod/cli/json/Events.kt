@@ -1,0 +1,65 @@
+package pod.cli.json
+
+import pod.core.engine.EngineEvent
+import pod.core.platform.MissionEvent
+import pod.core.vehicle.ConnectionState
+import pod.mavlink.FleetEvent
+import pod.mavlink.MavlinkVehicle
+
+// Pod's own objects as the events `--json` prints: the model stays free of them, and each
+// conversion picks the fields a script needs (never an object's toString()).
+
+/** The `found`, `lost` or `regained` event of a fleet change. */
+internal fun FleetEvent.toEvent(): Event {
+    val id = vehicle.identity.value
+    val type = id.type.name
+    val autopilot = id.autopilot.name
+    return when (this) {
+        is FleetEvent.Found -> Event.Found(id.systemId, id.componentId, type, autopilot)
+        is FleetEvent.Lost -> Event.Lost(id.systemId, id.componentId, type, autopilot, silence.inWholeMilliseconds)
+        is FleetEvent.Regained -> Event.Regained(id.systemId, id.componentId, type, autopilot)
+    }
+}
+
+/** The `telemetry` event: what [vehicle] last reported. */
+internal fun telemetryEvent(vehicle: MavlinkVehicle): Event.Telemetry {
+    val t = vehicle.telemetry
+    val pos = t.position.value
+    val battery = t.battery.value
+    val gps = t.gps.value
+    val link = t.linkQuality.value
+    return Event.Telemetry(
+        sysid = vehicle.systemId,
+        connected = vehicle.connection.value == ConnectionState.CONNECTED,
+        lat = pos?.location?.latitude, lon = pos?.location?.longitude,
+        altMsl = pos?.location?.altitude?.meters, altRel = pos?.relativeAltitude?.meters,
+        heading = pos?.heading?.degrees,
+        battery = battery?.remaining, voltage = battery?.voltage,
+        mode = t.mode.value?.name, armed = t.armed.value, landed = t.landedState.value.name,
+        gpsFix = gps?.fix?.name, satellites = gps?.satellites,
+        link = link.fraction, lostFrames = link.lost,
+    )
+}
+
+/** A program's event as printed by `pod demo --json`, or null for one it does not print (a step starting). */
+internal fun EngineEvent.toEvent(): Event? {
+    val at = at.inWholeMilliseconds / 1000.0
+    return when (this) {
+        is EngineEvent.TaskStarted -> Event.TaskStarted(at, id, parent, label, vehicles)
+        is EngineEvent.TaskCompleted -> Event.TaskDone(at, id, label)
+        is EngineEvent.TaskFailed -> Event.TaskFailed(at, id, label, error.message ?: error::class.simpleName ?: "failed")
+        is EngineEvent.TaskCancelled -> Event.TaskCancelled(at, id, label)
+        is EngineEvent.Flying -> Event.Flying(at, task, vehicle, mission.name, mission.steps.size)
+        is EngineEvent.Mission -> when (val e = event) {
+            is MissionEvent.Uploaded -> Event.Mission(at, task, vehicle, "uploaded", step = null, steps = e.steps)
+            MissionEvent.Started -> Event.Mission(at, task, vehicle, "started", step = null, steps = null)
+            is MissionEvent.StepStarted -> null
+            is MissionEvent.StepDone -> Event.Mission(at, task, vehicle, "step_done", step = e.step, steps = null)
+            MissionEvent.Completed -> Event.Mission(at, task, vehicle, "completed", step = null, steps = null)
+        }
+        is EngineEvent.MadeSafe -> Event.MadeSafe(at, vehicle, state.name, confirmed)
+        is EngineEvent.Picked -> Event.Picked(at, vehicles)
+        is EngineEvent.Released -> Event.Released(at, vehicles)
+        is EngineEvent.Message -> Event.Message(at, text)
+    }
+}
