@@ -7,10 +7,12 @@ import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import io.kotest.matchers.string.shouldNotContain
 import io.kotest.matchers.string.shouldStartWith
+import io.kotest.matchers.types.shouldBeInstanceOf
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.runInterruptible
 import kotlinx.coroutines.withTimeout
 import pod.cli.Output
+import pod.cli.json.Event
 import java.io.File
 import java.net.DatagramSocket
 import java.net.InetAddress
@@ -197,6 +199,15 @@ class BadInputSpec : StringSpec({
                 h.out.joinToString("\n") shouldContain "Usage: pod $command"
             }
         }
+    }
+
+    "with --json a bad input is also an error event on stdout, the only line there" {
+        val ran = pod("param", "set", "THIS_NAME_IS_WAY_TOO_LONG_FOR_MAVLINK", "1", "--json", *link())
+        ran.code shouldBe 2
+        ran.err shouldHaveSize 1
+        val event = decodeEvent(ran.out.single()).shouldBeInstanceOf<Event.Error>()
+        event.message shouldContain "THIS_NAME_IS_WAY_TOO_LONG_FOR_MAVLINK"
+        ran.err.single() shouldBe "error: ${event.message}"
     }
 
     "an unexpected failure is one line and exit 1, not a stack trace" {

@@ -6,6 +6,8 @@ import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.core.parse
 import com.github.ajalt.clikt.core.subcommands
 import com.github.ajalt.clikt.output.MordantHelpFormatter
+import pod.cli.json.Event
+import pod.cli.json.EventJson
 import pod.launch.Interruption
 import pod.mavlink.link.LinkException
 import kotlin.system.exitProcess
@@ -65,17 +67,30 @@ fun run(
     err: Output = Output { System.err.println(it) },
     debug: Boolean = System.getenv("POD_DEBUG") == "1",
 ): Int {
-    return try {
+    // With --json a script reads stdout: a bad input or an internal error is also an `error` event
+    // there (a vehicle's refusal already is, from the command itself).
+    val json = "--json" in args.takeWhile { it != "--" }
+    var said: String? = null
+    var internal = false
+    val errLine = Output { line -> if (said == null) said = line; err.line(line) }
+    val code = try {
         val pod = Pod(out)
         try {
             pod.parse(args)
             Exit.DONE
         } catch (e: CliktError) {
-            ExitReport.of(pod, e, out, err)
+            ExitReport.of(pod, e, out, errLine)
         }
     } catch (e: Throwable) {
-        ExitReport.internalError(e, err, debug)
+        internal = true
+        ExitReport.internalError(e, errLine, debug)
     }
+    val message = said
+    if (json && message != null && (code == Exit.USAGE || internal)) {
+        // The output may be what failed; the line on stderr has said it already.
+        runCatching { out.line(EventJson.encode(Event.Error(message.removePrefix("error: ")))) }
+    }
+    return code
 }
 
 fun main(args: Array<String>) {

@@ -106,7 +106,10 @@ public sealed interface Event {
         val type: String? = null,
     ) : Event
 
-    /** The command failed: the vehicle refused, did not answer or was lost. The same [message] goes to stderr. */
+    /**
+     * The command failed: the vehicle refused, did not answer or was lost (exit 1), or its arguments or
+     * files were bad (exit 2; then it is the only line). The same [message] goes to stderr.
+     */
     @Serializable @SerialName("error")
     public data class Error(val message: String) : Event
 
