@@ -17,6 +17,7 @@ import kotlinx.coroutines.withTimeoutOrNull
 import pod.core.units.Location
 import pod.core.units.m
 import pod.mavlink.MavlinkVehicle
+import pod.mavlink.action.VehicleDisarmed
 import kotlin.time.Duration.Companion.seconds
 
 /**
@@ -43,8 +44,15 @@ internal abstract class ActionCommand(out: Output, name: String, private val sum
         return "holding in ${t.mode.value?.name}"
     }
 
+    /** What to add when the action needs the vehicle armed and it is not: another way than `pod arm`, if the command has one. */
+    protected open val armHint: String = ""
+
     override suspend fun act(vehicle: MavlinkVehicle) {
-        val text = perform(vehicle)
+        val text = try {
+            perform(vehicle)
+        } catch (e: VehicleDisarmed) {
+            fail("vehicle ${e.systemId} is disarmed: arm it first with `pod arm`$armHint")
+        }
         val t = vehicle.telemetry
         finish(
             "vehicle ${vehicle.systemId}: $text",
@@ -148,9 +156,16 @@ internal class ResumeCommand(out: Output) : ActionCommand(out, "resume", "Contin
     override suspend fun perform(vehicle: MavlinkVehicle) = vehicle.action.continueMission().let { "resumed" }
 }
 
-internal class StartCommand(out: Output) : ActionCommand(out, "start", "Start the uploaded mission (arm first).") {
+internal class StartCommand(out: Output) : ActionCommand(out, "start", "Start the uploaded mission (arm first, or pass --arm).") {
     private val from by option("--from", help = "first item").int().restrictTo(0..65535)
-    override suspend fun perform(vehicle: MavlinkVehicle) = vehicle.action.startMission(from).let { "mission started" }
+    private val arm by option("--arm", help = "arm the vehicle first").flag()
+    override val armHint: String = ", or pass --arm"
+
+    override suspend fun perform(vehicle: MavlinkVehicle): String {
+        if (arm && !vehicle.telemetry.armed.value) vehicle.action.arm()
+        vehicle.action.startMission(from)
+        return "mission started" + (from?.let { " at item $it" } ?: "")
+    }
 }
 
 /** Every action command, in the order `pod --help` lists them. */

@@ -6,6 +6,7 @@ import com.github.ajalt.clikt.core.subcommands
 import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.types.double
 import pod.mavlink.MavlinkVehicle
+import pod.mavlink.param.ParamOutOfRange
 import pod.mavlink.param.Parameter
 
 /** `pod param`: read and write a vehicle's parameters. */
@@ -41,7 +42,17 @@ internal class ParamSet(out: Output) : VehicleCommandBase(out, "set") {
     override fun help(context: Context): String = "Write one parameter and print it as the vehicle then reports it."
 
     override suspend fun act(vehicle: MavlinkVehicle) {
-        val p = vehicle.params.write(name, value)
-        finish(p.text(), "action" to "param-set", "sysid" to vehicle.systemId, "name" to p.name, "value" to p.value, "type" to p.type.name)
+        val p = try {
+            vehicle.params.write(name, value)
+        } catch (e: ParamOutOfRange) {
+            badInput(e.message ?: "$name: ${e.value} does not fit")
+        }
+        // An integer parameter stores the value rounded: say so rather than echo a number never asked for.
+        val text = if (p.type.isInteger && p.value != value) {
+            "$name is an integer parameter (${p.type.name}): the vehicle stored ${p.value.toLong()} for $value"
+        } else {
+            p.text()
+        }
+        finish(text, "action" to "param-set", "sysid" to vehicle.systemId, "name" to p.name, "value" to p.value, "type" to p.type.name, "requested" to value)
     }
 }

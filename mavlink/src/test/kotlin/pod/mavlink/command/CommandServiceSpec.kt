@@ -93,6 +93,19 @@ class CommandServiceSpec : StringSpec({
         }
     }
 
+    "a line repeated with a trailing tab (PX4's event marker) is still shown once" {
+        withVehicle(answer = { m ->
+            if (m !is CommandLong) emptyList() else listOf(
+                Statustext.builder().severity(MavSeverity.MAV_SEVERITY_CRITICAL).text("Arming denied: mode not armable\t").build(),
+                Statustext.builder().severity(MavSeverity.MAV_SEVERITY_CRITICAL).text("Arming denied: mode not armable").build(),
+                ack(m.command().value(), CommandResult.DENIED),
+            )
+        }) { v, _ ->
+            val error = shouldThrow<CommandRejected> { v.commands.send(VehicleCommand(ARM, param1 = 1f)) }
+            error.message shouldBe "MAV_CMD_COMPONENT_ARM_DISARM was DENIED: Arming denied: mode not armable"
+        }
+    }
+
     "IN_PROGRESS reports progress until the final ACCEPTED, without resending" {
         withVehicle(answer = { m ->
             if (m !is CommandLong) emptyList() else listOf(
