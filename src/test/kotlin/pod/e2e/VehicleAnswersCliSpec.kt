@@ -85,6 +85,17 @@ class VehicleAnswersCliSpec : StringSpec({
         }
     }
 
+    "start --arm arms a disarmed copter and starts its mission" {
+        withSim(SimVehicleConfig(systemId = 71, parameters = mapOf("DISARM_DELAY" to 0.0))) { sim, port ->
+            sim.missionServer.load(MissionType.MISSION, Flights.copterSurvey(SimVehicleConfig.DEFAULT_HOME))
+            val (error, lines) = pod(port, "start", "--arm")
+            error shouldBe null
+            lines.last() shouldBe "vehicle 71: mission started"
+            sim.state.value.armed shouldBe true
+            sim.state.value.modeName shouldBe "AUTO"
+        }
+    }
+
     "start --from beyond the vehicle's mission fails fast, naming the items it holds" {
         val home = SimVehicleConfig.DEFAULT_HOME
         withSim(SimVehicleConfig(systemId = 64, autopilot = Autopilot.PX4)) { sim, port ->
@@ -104,6 +115,15 @@ class VehicleAnswersCliSpec : StringSpec({
             error shouldBe null
             lines.last() shouldBe "vehicle 65: mode GUIDED"
             sim.state.value.modeName shouldBe "GUIDED"
+        }
+    }
+
+    "waiting for a --sysid that never answers says whom it heard, while it waits and when it gives up" {
+        withSim(SimVehicleConfig(systemId = 70)) { _, port ->
+            val (error, lines) = pod(port, "arm", "--sysid", "42", "--wait", "3s")
+            error!!.statusCode shouldBe 1
+            error.message shouldBe "error: no heartbeat from vehicle 42 within 3.0 s; heard 70"
+            lines.first() shouldContain Regex("^waiting for vehicle 42 \\(2\\.\\d s of 3\\.0 s\\) — heard 70$")
         }
     }
 

@@ -151,7 +151,7 @@ internal abstract class VehicleCommandBase(protected val out: Output, name: Stri
     private suspend fun stopped(vehicle: MavlinkVehicle, signal: String): Nothing {
         val outcome = withContext(NonCancellable) {
             withTimeoutOrNull(SAFE_TIMEOUT) { runCatching { afterInterrupt(vehicle) } }
-                ?: Result.failure(IllegalStateException("no confirmation within $SAFE_TIMEOUT"))
+                ?: Result.failure(IllegalStateException("no confirmation within ${SAFE_TIMEOUT.toReadable()}"))
         }
         val t = vehicle.telemetry
         val how = outcome.getOrElse { "NOT confirmed safe: ${it.message ?: it}" }
