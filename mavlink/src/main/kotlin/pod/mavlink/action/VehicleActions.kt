@@ -142,7 +142,8 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
 
     /**
      * Takes off to [altitude] above home and waits until it is reached (within 5 %, at least
-     * 1 m) or [timeout] passes. The vehicle must be armed. ArduPilot copters switch to GUIDED
+     * 1 m) or [timeout] passes. The vehicle must be armed ([VehicleDisarmed] otherwise, before
+     * anything changes) and stay so ([DisarmedDuring] as soon as it disarms). ArduPilot copters switch to GUIDED
      * first; ArduPilot planes use TAKEOFF mode with TKOFF_ALT; PX4 takes NAV_TAKEOFF to an
      * altitude above sea level, computed from home.
      */
@@ -275,9 +276,11 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
 
     /**
      * Starts the uploaded mission (MISSION_START) at item [first], or where it stands when null,
-     * and waits for the mission mode. The vehicle must be armed (PX4 arms itself); an ArduPilot
-     * copter's mission must begin with a takeoff. ArduPilot refuses a start item in the command
-     * itself, so there the current item is set first.
+     * and waits for the mission mode. The vehicle must be armed (PX4 arms itself), else
+     * [VehicleDisarmed] before anything is sent; an ArduPilot copter's mission must begin with a
+     * takeoff. [first] must be one of the vehicle's items ([NoSuchMissionItem]: the count is
+     * downloaded first). ArduPilot refuses a start item in the command itself, so there the
+     * current item is set first.
      */
     public suspend fun startMission(first: Int? = null) {
         require(first == null || first >= 0) { "first must be ≥ 0, was $first" }
