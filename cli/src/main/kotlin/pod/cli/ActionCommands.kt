@@ -157,7 +157,7 @@ internal class ResumeCommand(out: Output) : ActionCommand(out, "resume", "Contin
 }
 
 internal class StartCommand(out: Output) : ActionCommand(out, "start", "Start the uploaded mission (arm first, or pass --arm).") {
-    private val from by option("--from", help = "first item").int().restrictTo(0..65535)
+    private val from by option("--from", help = "first item to fly (checked against the mission on board)").int().restrictTo(0..65535)
     private val arm by option("--arm", help = "arm the vehicle first").flag()
     override val armHint: String = ", or pass --arm"
 
