@@ -106,6 +106,6 @@ class MissionCliSpec : StringSpec({
             withContext(Dispatchers.IO) { Pod(Lines()).parse(listOf("mission", "clear", "--connect", "udpin:127.0.0.1:${freePort()}", "--wait", "1s")) }
         }
         error.statusCode shouldBe 1
-        error.message!! shouldContain "no vehicle heard within 1s"
+        error.message!! shouldContain "no vehicle heard within 1.0 s"
     }
 })

@@ -27,6 +27,7 @@ import pod.mavlink.GroundStationConfig
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.action.UnknownMode
 import pod.mavlink.command.CommandRejected
+import pod.mavlink.action.VehicleDisarmed
 import pod.mavlink.command.CommandResult
 import pod.mavlink.command.CommandTimeout
 import pod.mavlink.command.CommandTiming
@@ -121,7 +122,8 @@ class VehicleControlSpec : StringSpec({
             arm.message!! shouldContain "Arm"
             v.telemetry.armed.value shouldBe false
 
-            shouldThrow<CommandRejected> { v.action.takeoff(10.m) }.command.command shouldBe 22
+            // Refused before anything is sent: a disarmed vehicle does not take off (PX4 would accept and sit on the ground).
+            shouldThrow<VehicleDisarmed> { v.action.takeoff(10.m) }.message shouldBe "vehicle 43 is disarmed: arm it first to take off"
             shouldThrow<CommandRejected> { v.commands.send(VehicleCommand(31_000)) }.result shouldBe CommandResult.UNSUPPORTED
             shouldThrow<UnknownMode> { v.action.setMode("WARP") }.known.contains("GUIDED") shouldBe true
         }

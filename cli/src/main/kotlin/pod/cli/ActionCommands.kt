@@ -18,6 +18,7 @@ import pod.cli.json.Event
 import pod.core.units.Location
 import pod.core.units.m
 import pod.mavlink.MavlinkVehicle
+import pod.mavlink.action.VehicleDisarmed
 import kotlin.time.Duration.Companion.seconds
 
 /**
@@ -44,8 +45,15 @@ internal abstract class ActionCommand(out: Output, name: String, private val sum
         return "holding in ${t.mode.value?.name}"
     }
 
+    /** What to add when the action needs the vehicle armed and it is not: another way than `pod arm`, if the command has one. */
+    protected open val armHint: String = ""
+
     override suspend fun act(vehicle: MavlinkVehicle) {
-        val text = perform(vehicle)
+        val text = try {
+            perform(vehicle)
+        } catch (e: VehicleDisarmed) {
+            fail("vehicle ${e.systemId} is disarmed: arm it first with `pod arm`$armHint")
+        }
         finish("vehicle ${vehicle.systemId}: $text", vehicle, action = commandName)
     }
 }
@@ -155,9 +163,16 @@ internal class ResumeCommand(out: Output) : ActionCommand(out, "resume", "Contin
     override suspend fun perform(vehicle: MavlinkVehicle) = vehicle.action.continueMission().let { "resumed" }
 }
 
-internal class StartCommand(out: Output) : ActionCommand(out, "start", "Start the uploaded mission (arm first).") {
-    private val from by option("--from", help = "first item").int().restrictTo(0..65535)
-    override suspend fun perform(vehicle: MavlinkVehicle) = vehicle.action.startMission(from).let { "mission started" }
+internal class StartCommand(out: Output) : ActionCommand(out, "start", "Start the uploaded mission (arm first, or pass --arm).") {
+    private val from by option("--from", help = "first item to fly (checked against the mission on board)").int().restrictTo(0..65535)
+    private val arm by option("--arm", help = "arm the vehicle first").flag()
+    override val armHint: String = ", or pass --arm"
+
+    override suspend fun perform(vehicle: MavlinkVehicle): String {
+        if (arm && !vehicle.telemetry.armed.value) vehicle.action.arm()
+        vehicle.action.startMission(from)
+        return "mission started" + (from?.let { " at item $it" } ?: "")
+    }
 }
 
 /** Every action command, in the order `pod --help` lists them. */

@@ -10,6 +10,7 @@ import com.github.ajalt.clikt.parameters.arguments.check
 import com.github.ajalt.clikt.parameters.arguments.convert
 import com.github.ajalt.clikt.parameters.types.double
 import pod.mavlink.MavlinkVehicle
+import pod.mavlink.param.ParamOutOfRange
 import pod.mavlink.param.Parameter
 
 /** `pod param`: read and write a vehicle's parameters. */
@@ -53,7 +54,17 @@ internal class ParamSet(out: Output) : VehicleCommandBase(out, "set") {
     override fun help(context: Context): String = "Write one parameter and print it as the vehicle then reports it."
 
     override suspend fun act(vehicle: MavlinkVehicle) {
-        val p = vehicle.params.write(name, value)
-        finish(p.text(), vehicle, action = "param-set", param = p)
+        val p = try {
+            vehicle.params.write(name, value)
+        } catch (e: ParamOutOfRange) {
+            badInput(e.message ?: "$name: ${e.value} does not fit")
+        }
+        // An integer parameter stores the value rounded: say so rather than echo a number never asked for.
+        val text = if (p.type.isInteger && p.value != value) {
+            "$name is an integer parameter (${p.type.name}): the vehicle stored ${p.value.toLong()} for $value"
+        } else {
+            p.text()
+        }
+        finish(text, vehicle, action = "param-set", param = p, requested = value)
     }
 }

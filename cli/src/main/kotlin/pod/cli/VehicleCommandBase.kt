@@ -10,11 +10,12 @@ import com.github.ajalt.clikt.parameters.types.int
 import com.github.ajalt.clikt.parameters.types.restrictTo
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.NonCancellable
-import kotlinx.coroutines.TimeoutCancellationException
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.flow.filterNotNull
 import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.launch
 import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.withContext
-import kotlinx.coroutines.withTimeout
 import kotlinx.coroutines.withTimeoutOrNull
 import pod.cli.json.Event
 import pod.cli.json.EventJson
@@ -30,6 +31,8 @@ import pod.mavlink.param.ParamException
 import pod.mavlink.param.Parameter
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
+import kotlin.time.TimeSource
+import pod.core.units.toReadable
 
 /**
  * A command that talks to one vehicle: opens the link, waits for the vehicle (`--sysid` picks one
@@ -64,6 +67,7 @@ internal abstract class VehicleCommandBase(protected val out: Output, name: Stri
         val gcs = reportingLinkErrors { GroundStation.open(connect, this) }
         try {
             val vehicle = pick(gcs, wait)
+            val awaiting = launch { showAwaiting(vehicle) }
             try {
                 Interruption.cancellable { act(vehicle) }
             } catch (e: Interrupted) {
@@ -78,36 +82,81 @@ internal abstract class VehicleCommandBase(protected val out: Output, name: Stri
                 fail(e.message ?: e.toString())
             } catch (e: VehicleLost) {
                 fail(e.message ?: e.toString())
+            } finally {
+                awaiting.cancel()
             }
         } finally {
             gcs.close()
         }
     }
 
+    /**
+     * The vehicle to talk to: the one with `--sysid`, else the only one heard. [wait] bounds the
+     * wait for a heartbeat; once one vehicle is heard, others on the link get [OTHERS_WINDOW] (a
+     * heartbeat period and a half) to speak up, outside [wait]. Says every few seconds what it
+     * waits for and whom it heard.
+     */
     private suspend fun CoroutineScope.pick(gcs: GroundStation, wait: Duration): MavlinkVehicle {
         val wanted = sysid
-        return try {
-            withTimeout(wait) {
-                if (wanted != null) {
-                    gcs.vehicles.first { wanted in it }.getValue(wanted)
-                } else {
-                    val first = gcs.vehicles.first { it.isNotEmpty() }
-                    // Give other vehicles on the link a moment to speak up before choosing.
-                    kotlinx.coroutines.delay(1.5.seconds)
-                    val all = gcs.vehicles.value
-                    if (all.size > 1) fail("several vehicles answer (system ids ${all.keys.sorted().joinToString()}): pick one with --sysid")
-                    first.values.first()
-                }
+        fun heard() = gcs.vehicles.value.keys.sorted()
+        val progress = launch {
+            val started = TimeSource.Monotonic.markNow()
+            while (true) {
+                delay(WAITING_EVERY)
+                val heard = heard()
+                val waited = started.elapsedNow().toReadable()
+                out.line(
+                    if (json) {
+                        EventJson.encode(Event.Waiting(wanted, "heartbeat", heard = heard, waitedS = started.elapsedNow().inWholeMilliseconds / 1000.0, timeoutS = wait.inWholeMilliseconds / 1000.0))
+                    } else {
+                        "waiting for ${wanted?.let { "vehicle $it" } ?: "a vehicle"} (${waited} of ${wait.toReadable()}) — " +
+                            if (heard.isEmpty()) "none heard yet" else "heard ${heard.joinToString()}"
+                    },
+                )
             }
-        } catch (e: TimeoutCancellationException) {
-            fail(if (wanted != null) "no heartbeat from vehicle $wanted within $wait" else "no vehicle heard within $wait")
+        }
+        try {
+            if (wanted != null) {
+                return withTimeoutOrNull(wait) { gcs.vehicles.first { wanted in it }.getValue(wanted) }
+                    ?: fail("no heartbeat from vehicle $wanted within ${wait.toReadable()}" + heard().let { if (it.isEmpty()) "; no vehicle heard at all" else "; heard ${it.joinToString()}" })
+            }
+            withTimeoutOrNull(wait) { gcs.vehicles.first { it.isNotEmpty() } } ?: fail("no vehicle heard within ${wait.toReadable()}")
+            withTimeoutOrNull(OTHERS_WINDOW) { gcs.vehicles.first { it.size > 1 } }
+            val all = gcs.vehicles.value
+            if (all.size > 1) fail("several vehicles answer (system ids ${all.keys.sorted().joinToString()}): pick one with --sysid")
+            return all.values.first()
+        } finally {
+            progress.cancel()
+        }
+    }
+
+    /** Says what [vehicle] leaves unanswered while it lasts, at most every [WAITING_EVERY] for the same exchange. */
+    private suspend fun showAwaiting(vehicle: MavlinkVehicle) {
+        var lastWhat: String? = null
+        var lastShown = TimeSource.Monotonic.markNow()
+        vehicle.awaiting.filterNotNull().collect { a ->
+            if (a.what == lastWhat && lastShown.elapsedNow() < WAITING_EVERY) return@collect
+            lastWhat = a.what
+            lastShown = TimeSource.Monotonic.markNow()
+            out.line(
+                if (json) {
+                    EventJson.encode(
+                        Event.Waiting(
+                            a.systemId, a.what, attempt = a.attempt,
+                            waitedS = a.waited.inWholeMilliseconds / 1000.0, timeoutS = a.giveUpAfter?.let { it.inWholeMilliseconds / 1000.0 },
+                        ),
+                    )
+                } else {
+                    a.describe()
+                },
+            )
         }
     }
 
     private suspend fun stopped(vehicle: MavlinkVehicle, signal: String): Nothing {
         val outcome = withContext(NonCancellable) {
             withTimeoutOrNull(SAFE_TIMEOUT) { runCatching { afterInterrupt(vehicle) } }
-                ?: Result.failure(IllegalStateException("no confirmation within $SAFE_TIMEOUT"))
+                ?: Result.failure(IllegalStateException("no confirmation within ${SAFE_TIMEOUT.toReadable()}"))
         }
         val t = vehicle.telemetry
         val how = outcome.getOrElse { "NOT confirmed safe: ${it.message ?: it}" }
@@ -139,7 +188,7 @@ internal abstract class VehicleCommandBase(protected val out: Output, name: Stri
      * [vehicle]'s mode, armed state and altitude as the command ends, and what the command
      * concerned: the list's [items], the [param] read or written.
      */
-    protected fun finish(text: String, vehicle: MavlinkVehicle, action: String, items: Int? = null, param: Parameter? = null) {
+    protected fun finish(text: String, vehicle: MavlinkVehicle, action: String, items: Int? = null, param: Parameter? = null, requested: Double? = null) {
         if (System.console() != null && !json) println()
         if (!json) return out.line(text)
         val t = vehicle.telemetry
@@ -147,7 +196,7 @@ internal abstract class VehicleCommandBase(protected val out: Output, name: Stri
             Event.Done(
                 action = action, sysid = vehicle.systemId, mode = t.mode.value?.name, armed = t.armed.value,
                 relativeAltM = t.position.value?.relativeAltitude?.meters,
-                items = items, name = param?.name, value = param?.value, type = param?.type?.name,
+                items = items, name = param?.name, value = param?.value, type = param?.type?.name, requested = requested,
             ),
         )
     }
@@ -155,5 +204,11 @@ internal abstract class VehicleCommandBase(protected val out: Output, name: Stri
     private companion object {
         /** How long an interrupted command waits for the vehicle to confirm it is safe. */
         val SAFE_TIMEOUT: Duration = 15.seconds
+
+        /** After the first vehicle is heard, how long others get to speak up: a heartbeat period (1 s) and a half. */
+        val OTHERS_WINDOW: Duration = 1.5.seconds
+
+        /** How often a wait is reported while it lasts. */
+        val WAITING_EVERY: Duration = 2.seconds
     }
 }

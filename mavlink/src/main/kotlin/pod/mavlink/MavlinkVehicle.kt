@@ -68,6 +68,15 @@ public class MavlinkVehicle internal constructor(
     /** Whether heartbeats still arrive. */
     public val connection: StateFlow<ConnectionState> = _connection.asStateFlow()
 
+    internal val _awaiting = MutableStateFlow<Awaiting?>(null)
+
+    /**
+     * The exchange (command, parameter, mission transfer) this vehicle has left unanswered for a
+     * couple of seconds while Pod keeps asking, or null: for a UI to say what it waits for
+     * instead of staying silent until the exchange fails.
+     */
+    public val awaiting: StateFlow<Awaiting?> = _awaiting.asStateFlow()
+
     /** Live telemetry. */
     public val telemetry: VehicleTelemetry = VehicleTelemetry()
 

@@ -78,9 +78,21 @@ public sealed interface Event {
 
     // ---- commands to one vehicle (arm, takeoff, mission …, param …) ----
 
-    /** The vehicle is not ready yet and the command waits: [reason] says for what (printed once per reason). */
+    /**
+     * The command waits and says for what ([reason]): a vehicle not ready yet (`arm`, once per
+     * reason), a `heartbeat` while picking the vehicle ([sysid] null when any will do; [heard] the
+     * system ids heard so far), or an answer the vehicle has not given yet while Pod resends
+     * ([attempt]). [waitedS] is how long it has waited, [timeoutS] when it gives up, in seconds.
+     */
     @Serializable @SerialName("waiting")
-    public data class Waiting(val sysid: Int, @SerialName("for") val reason: String) : Event
+    public data class Waiting(
+        val sysid: Int?,
+        @SerialName("for") val reason: String,
+        val heard: List<Int>? = null,
+        val attempt: Int? = null,
+        @SerialName("waited_s") val waitedS: Finite? = null,
+        @SerialName("timeout_s") val timeoutS: Finite? = null,
+    ) : Event
 
     /** A mission transfer moved on: [done] of [total] items ([action] is `uploading` or `downloading`). */
     @Serializable @SerialName("progress")
@@ -90,7 +102,8 @@ public sealed interface Event {
      * The command did what was asked; the last line. [action] names the command (`arm`, `takeoff`,
      * `upload`, `param-set`…). [mode], [armed] and [relativeAltM] are the vehicle's state as the
      * command ends; [items] is the list's size after a mission command; [name], [value] and [type]
-     * are the parameter of `param get` / `param set`, as the vehicle reports it. Fields a command
+     * are the parameter of `param get` / `param set`, as the vehicle reports it, and [requested] the
+     * value `param set` asked for (an integer parameter stores it rounded). Fields a command
      * does not concern are null.
      */
     @Serializable @SerialName("done")
@@ -104,6 +117,7 @@ public sealed interface Event {
         val name: String? = null,
         val value: Finite? = null,
         val type: String? = null,
+        val requested: Finite? = null,
     ) : Event
 
     /**

@@ -70,12 +70,13 @@ class EventJsonTest : StringSpec({
 
     "a done line of an action and a telemetry line keep their snake_case field names" {
         EventJson.encode(Event.Done("takeoff", 51, "GUIDED", true, 12.0)) shouldBe
-            """{"event":"done","action":"takeoff","sysid":51,"mode":"GUIDED","armed":true,"relative_alt_m":12.0,"items":null,"name":null,"value":null,"type":null}"""
+            """{"event":"done","action":"takeoff","sysid":51,"mode":"GUIDED","armed":true,"relative_alt_m":12.0,"items":null,"name":null,"value":null,"type":null,"requested":null}"""
         EventJson.encode(samples.first { it is Event.Telemetry }) shouldBe
             """{"event":"telemetry","sysid":42,"connected":true,"lat":41.1234567,"lon":-8.54321,"alt_msl":95.5,"alt_rel":12.3,""" +
             """"heading":90.0,"battery":0.87,"voltage":12.4,"mode":"AUTO","armed":true,"landed":"IN_AIR","gps_fix":"FIX_3D","satellites":10,""" +
             """"link":0.99,"lost_frames":2}"""
-        EventJson.encode(Event.Waiting(7, "a GPS fix")) shouldBe """{"event":"waiting","sysid":7,"for":"a GPS fix"}"""
+        EventJson.encode(Event.Waiting(7, "a GPS fix")) shouldBe
+            """{"event":"waiting","sysid":7,"for":"a GPS fix","heard":null,"attempt":null,"waited_s":null,"timeout_s":null}"""
     }
 
     "numbers that are not finite are written as null and read back as null" {

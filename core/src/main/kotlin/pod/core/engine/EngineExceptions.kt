@@ -1,5 +1,6 @@
 package pod.core.engine
 
+import pod.core.units.toReadable
 import kotlin.time.Duration
 
 /** A pick found too few vehicles within its timeout. */
@@ -10,7 +11,7 @@ public class PickTimeout(
     public val matching: Int,
     /** How long it waited, in vehicle time. */
     public val waited: Duration,
-) : Exception("pick timed out after $waited: wanted ${request.describe()}, found $matching")
+) : Exception("pick timed out after ${waited.toReadable()}: wanted ${request.describe()}, found $matching")
 
 /** A task asked for a vehicle that another running task holds; a vehicle is in at most one running task. */
 public class VehicleBusy(

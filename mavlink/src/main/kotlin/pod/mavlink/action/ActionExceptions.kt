@@ -2,6 +2,7 @@ package pod.mavlink.action
 
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleType
+import pod.core.units.toReadable
 import kotlin.time.Duration
 
 /** An action the vehicle did not confirm. Command failures come as [pod.mavlink.command.CommandException]. */
@@ -40,7 +41,7 @@ public class ActionNotConfirmed(
     public val observed: String,
     /** How long Pod watched. */
     public val waited: Duration,
-) : ActionException("$action was accepted but the vehicle did not show $expected within $waited (last seen: $observed)")
+) : ActionException("$action was accepted but the vehicle did not show $expected within ${waited.toReadable()} (last seen: $observed)")
 
 /**
  * The vehicle was still initialising when [waited] ran out: it kept refusing to arm with
@@ -53,4 +54,44 @@ public class VehicleNotReady(
     public val reason: String,
     /** How long Pod waited. */
     public val waited: Duration,
-) : ActionException("vehicle $systemId was still not ready to arm after $waited: $reason")
+) : ActionException("vehicle $systemId was still not ready to arm after ${waited.toReadable()}: $reason")
+
+/** [action] needs the motors armed and vehicle [systemId] reports them disarmed; nothing was sent. */
+public class VehicleDisarmed(
+    /** The vehicle's system id. */
+    public val systemId: Int,
+    /** What was asked ("take off", "start the mission"). */
+    public val action: String,
+) : ActionException("vehicle $systemId is disarmed: arm it first to $action")
+
+/**
+ * Vehicle [systemId] disarmed itself while Pod waited for [action] to show (PX4 disarms a vehicle
+ * left on the ground for COM_DISARM_PRFLT seconds); [observed] is what it showed last.
+ */
+public class DisarmedDuring(
+    /** The vehicle's system id. */
+    public val systemId: Int,
+    /** What was under way. */
+    public val action: String,
+    /** The state seen last, in words. */
+    public val observed: String,
+) : ActionException("vehicle $systemId disarmed itself during $action ($observed)")
+
+/**
+ * Vehicle [systemId] holds [count] mission items and there is no item [item] to start from
+ * (an empty mission has none at all).
+ */
+public class NoSuchMissionItem(
+    /** The vehicle's system id. */
+    public val systemId: Int,
+    /** The item asked for, or null for "where it stands". */
+    public val item: Int?,
+    /** How many items the vehicle reports (MISSION_COUNT; on ArduPilot item 0 is home). */
+    public val count: Int,
+) : ActionException(
+    if (item == null) {
+        "vehicle $systemId holds no mission: upload one first"
+    } else {
+        "vehicle $systemId holds $count mission items (0..${count - 1}): there is no item $item to start from"
+    },
+)

@@ -142,12 +142,17 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
 
     /**
      * Takes off to [altitude] above home and waits until it is reached (within 5 %, at least
-     * 1 m) or [timeout] passes. The vehicle must be armed. ArduPilot copters switch to GUIDED
+     * 1 m) or [timeout] passes. The vehicle must be armed ([VehicleDisarmed] otherwise, before
+     * anything changes) and stay so ([DisarmedDuring] as soon as it disarms). ArduPilot copters switch to GUIDED
      * first; ArduPilot planes use TAKEOFF mode with TKOFF_ALT; PX4 takes NAV_TAKEOFF to an
      * altitude above sea level, computed from home.
      */
     public suspend fun takeoff(altitude: Distance, timeout: Duration = 2.minutes) {
         require(altitude.meters > 0 && altitude.meters <= 10_000) { "altitude must be in (0, 10000] m, was $altitude" }
+        // PX4 accepts NAV_TAKEOFF disarmed and sits in Takeoff mode on the ground (commander's
+        // VEHICLE_CMD_NAV_TAKEOFF only changes the mode; it never arms), and ArduCopter refuses it
+        // with a bare FAILED (Mode::do_user_takeoff): say so before changing anything.
+        requireArmed("take off")
         val (autopilot, type) = airframe()
         when {
             autopilot == Autopilot.PX4 -> {
@@ -169,7 +174,7 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
             }
         }
         val tolerance = maxOf(1.0, altitude.meters * 0.05)
-        confirm("takeoff to $altitude", "altitude ≥ ${altitude.meters - tolerance} m", vehicle.telemetry.position, timeout) {
+        confirm("takeoff to $altitude", "altitude ≥ ${altitude.meters - tolerance} m", vehicle.telemetry.position, timeout, untilDisarmed = true, describe = ::heightText) {
             it != null && it.relativeAltitude.meters >= altitude.meters - tolerance
         }
     }
@@ -271,13 +276,27 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
 
     /**
      * Starts the uploaded mission (MISSION_START) at item [first], or where it stands when null,
-     * and waits for the mission mode. The vehicle must be armed (PX4 arms itself); an ArduPilot
-     * copter's mission must begin with a takeoff. ArduPilot refuses a start item in the command
-     * itself, so there the current item is set first.
+     * and waits for the mission mode. The vehicle must be armed (PX4 arms itself), else
+     * [VehicleDisarmed] before anything is sent; an ArduPilot copter's mission must begin with a
+     * takeoff. [first] must be one of the vehicle's items ([NoSuchMissionItem]: the count is
+     * downloaded first). ArduPilot refuses a start item in the command itself, so there the
+     * current item is set first.
      */
     public suspend fun startMission(first: Int? = null) {
         require(first == null || first >= 0) { "first must be ≥ 0, was $first" }
         val px4 = airframe().first == Autopilot.PX4
+        // ArduCopter and ArduPlane take MISSION_START disarmed and switch to AUTO on the ground
+        // (GCS_MAVLINK_Copter::handle_MAV_CMD_MISSION_START, ArduPlane's GCS_MAVLINK_Plane: set_mode
+        // AUTO only), where the copter then refuses to arm ("Mode not armable"); PX4 arms itself
+        // (Commander: VEHICLE_CMD_MISSION_START changes to AUTO_MISSION and calls arm()).
+        if (!px4) requireArmed("start the mission")
+        if (first != null) {
+            // ArduPilot ignores MISSION_SET_CURRENT beyond its mission without a word
+            // (GCS_MAVLINK::handle_mission_set_current answers only when set_current_cmd succeeds),
+            // PX4 denies MISSION_START beyond seq_total: check against what the vehicle holds.
+            val count = vehicle.mission.download().size
+            if (first >= count) throw NoSuchMissionItem(vehicle.systemId, if (count == 0) null else first, count)
+        }
         if (first != null && !px4) vehicle.mission.setCurrent(first)
         command(VehicleCommand(MISSION_START, param1 = if (px4 && first != null) first.toFloat() else 0f))
         confirmMode("start mission", ModeRole.MISSION)
@@ -353,20 +372,36 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
         confirm(action, "mode $name", vehicle.telemetry.mode) { it?.name == name }
     }
 
-    private suspend fun <T> confirm(action: String, expected: String, state: StateFlow<T>, timeout: Duration = confirmTimeout, ok: (T) -> Boolean) =
-        confirm(action, expected, state as kotlinx.coroutines.flow.Flow<T>, timeout, ok)
-
-    /** Waits for [ok] on [state]; fails on timeout with the last value seen, or when the vehicle is lost. */
-    private suspend fun <T> confirm(action: String, expected: String, state: kotlinx.coroutines.flow.Flow<T>, timeout: Duration, ok: (T) -> Boolean) {
+    /**
+     * Waits for [ok] on [state]; fails on timeout with the last value seen (in words, by
+     * [describe]), when the vehicle is lost, or, with [untilDisarmed], as soon as it disarms.
+     */
+    private suspend fun <T> confirm(
+        action: String,
+        expected: String,
+        state: kotlinx.coroutines.flow.Flow<T>,
+        timeout: Duration = confirmTimeout,
+        untilDisarmed: Boolean = false,
+        describe: (T) -> String = ::stateText,
+        ok: (T) -> Boolean,
+    ) {
         var last: T? = null
+        var seen = false
         val outcome = withTimeoutOrNull(timeout) {
-            combine(state, vehicle.connection) { value, connection -> value to connection }
-                .first { (value, connection) ->
+            combine(state, vehicle.connection, vehicle.telemetry.armed) { value, connection, armed -> Triple(value, connection, armed) }
+                .first { (value, connection, armed) ->
                     last = value
-                    ok(value) || connection == ConnectionState.LOST
+                    seen = true
+                    ok(value) || connection == ConnectionState.LOST || (untilDisarmed && !armed)
                 }
-        } ?: throw ActionNotConfirmed(action, expected, last.toString(), timeout)
-        if (!ok(outcome.first)) throw VehicleLost(vehicle.systemId, action)
+        } ?: throw ActionNotConfirmed(action, expected, if (seen) describe(last as T) else "nothing", timeout)
+        if (ok(outcome.first)) return
+        if (outcome.second == ConnectionState.LOST) throw VehicleLost(vehicle.systemId, action)
+        throw DisarmedDuring(vehicle.systemId, action, describe(outcome.first))
+    }
+
+    private fun requireArmed(action: String) {
+        if (!vehicle.telemetry.armed.value) throw VehicleDisarmed(vehicle.systemId, action)
     }
 
     private companion object {

@@ -1,5 +1,6 @@
 package pod.mavlink.command
 
+import pod.core.units.toReadable
 import kotlin.time.Duration
 
 /** A command the vehicle did not carry out. */
@@ -27,10 +28,19 @@ public class CommandRejected(
     public val statusTexts: List<String> = emptyList(),
     /** How many times the command had been sent when the refusal came. */
     public val attempts: Int = 1,
+    /**
+     * What a person can do about it, judged from the vehicle's state when the autopilot gave no
+     * reason ("switch with `pod mode GUIDED`"), or null.
+     */
+    public val hint: String? = null,
 ) : CommandException(
     "${command.label} was ${result?.name ?: "answered with MAV_RESULT $resultCode"}" +
-        (if (statusTexts.isEmpty()) "" else ": " + statusTexts.joinToString("; ")),
-)
+        (if (statusTexts.isEmpty()) "" else ": " + statusTexts.joinToString("; ")) +
+        (hint?.let { " ($it)" } ?: ""),
+) {
+    internal fun withHint(hint: String?): CommandRejected =
+        if (hint == null) this else CommandRejected(command, result, resultCode, statusTexts, attempts, hint)
+}
 
 /**
  * No final answer to [command] came within [waited]: no COMMAND_ACK after [attempts] sends, or no
@@ -44,4 +54,4 @@ public class CommandTimeout(
     public val waited: Duration,
     /** What was missing. */
     public val waitingFor: String,
-) : CommandException("${command.label} timed out after $attempts sends and $waited waiting for $waitingFor")
+) : CommandException("${command.label} timed out after $attempts sends and ${waited.toReadable()} waiting for $waitingFor")

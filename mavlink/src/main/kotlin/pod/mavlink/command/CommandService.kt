@@ -62,7 +62,7 @@ public class CommandService internal constructor(
         val texts = RefusalTexts()
         // When the vehicle's autopilot last sent anything, on this exchange's clock (set on the collector's thread).
         val lastHeard = AtomicLong(-vehicle.lastHeartbeat.elapsedNow().inWholeNanoseconds)
-        return vehicle.exchange(command.label, { inbound ->
+        return vehicle.exchange(command.label, pick = { inbound ->
             if (inbound.frame.componentId == identity.componentId) lastHeard.set(now())
             when (val message = inbound.message) {
                 // Older autopilots leave the target empty (0); anything else must be us.
@@ -71,7 +71,7 @@ public class CommandService internal constructor(
                 } else null
                 else -> null
             }
-        }) { replies ->
+        }, giveUpAfter = timing.timeout) { replies, watch ->
             // Texts come from the vehicle's joined STATUSTEXT lines (a long one arrives in chunks).
             val listening = launch(start = CoroutineStart.UNDISPATCHED) {
                 vehicle.statusTexts.collect { if (it.severity.ordinal <= MAV_SEVERITY_WARNING) texts.add(it.text) }
@@ -81,11 +81,19 @@ public class CommandService internal constructor(
                 while (true) {
                     if (step.confirmation >= 0) {
                         vehicle.send(CommandWire.encode(command, identity.systemId, identity.componentId, step.confirmation))
+                        watch.sent()
                     }
                     val outcome = step.outcome
                     if (outcome != null) {
                         if (outcome is CommandTransaction.Outcome.Rejected) texts.awaitQuiet()
-                        machine.error(outcome, texts.lines())?.let { throw it }
+                        machine.error(outcome, texts.lines())?.let { error ->
+                            throw if (error is CommandRejected && error.statusTexts.isEmpty()) {
+                                val t = vehicle.telemetry
+                                error.withHint(RefusalHints.forRefusal(command, error.result, vehicle.identity.value, t.mode.value?.name, t.armed.value))
+                            } else {
+                                error
+                            }
+                        }
                         return@exchange (outcome as CommandTransaction.Outcome.Accepted).reply
                     }
                     val wait = (step.wakeAt - now()).coerceAtLeast(0)
@@ -113,7 +121,9 @@ public class CommandService internal constructor(
         private val arrived = Channel<Unit>(Channel.CONFLATED)
 
         fun add(line: String) {
-            synchronized(lines) { lines += line }
+            // PX4's commander ends the lines it also sends as events with a tab (Commander.cpp:
+            // "Mission start denied! No valid mission\t"): with or without it, the same line.
+            synchronized(lines) { lines += line.trim() }
             arrived.trySend(Unit)
         }
 

@@ -35,6 +35,7 @@ import pod.mavlink.plan.MissionPlan
 import pod.mavlink.plan.MissionPlanner
 import pod.mavlink.telemetry.FlightModes
 import pod.mavlink.telemetry.ModeRole
+import pod.core.units.toReadable
 
 /**
  * Flies one [mission] on one [vehicle]: replaces the vehicle's list with the plan for its flavour
@@ -226,7 +227,7 @@ public class MissionExecutor(
             combine(vehicle.telemetry.home, vehicle.telemetry.position) { home, position ->
                 home ?: position?.takeIf { !airborne() }?.let { it.location.copy(altitude = (it.location.altitude.meters - it.relativeAltitude.meters).m) }
             }.filterNotNull().first()
-        } ?: throw MissionNotFlyable(mission.name, "the vehicle reported no home within ${timing.homeTimeout}")
+        } ?: throw MissionNotFlyable(mission.name, "the vehicle reported no home within ${timing.homeTimeout.toReadable()}")
     }
 
     private val during: String get() = "mission \"${mission.name}\""

@@ -1,5 +1,6 @@
 package pod.mavlink.mission
 
+import pod.core.units.toReadable
 import kotlin.time.Duration
 
 /** A mission transfer (upload, download, clear, set-current) that did not succeed. */
@@ -28,7 +29,7 @@ public class MissionTimeout(
     /** What the transfer was waiting for. */
     public val waitingFor: String,
     operation: String,
-) : MissionException("$operation of ${type.name.lowercase()} timed out waiting for $waitingFor after $retries retries (last timeout $lastTimeout)")
+) : MissionException("$operation of ${type.name.lowercase()} timed out waiting for $waitingFor after $retries retries (last timeout ${lastTimeout.toReadable()})")
 
 /** The items cannot be sent: [seq] names the first bad item and [reason] says why. */
 public class InvalidMission(

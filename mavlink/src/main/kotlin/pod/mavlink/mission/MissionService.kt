@@ -210,7 +210,7 @@ public class MissionService internal constructor(
         fun now() = clock.elapsedNow().inWholeNanoseconds
         val identity = vehicle.identity.value
         val ourSystem = vehicle.station.config.systemId
-        return vehicle.exchange("a ${type.name.lowercase()} transfer", { inbound ->
+        return vehicle.exchange("a ${type.name.lowercase()} transfer", pick = { inbound ->
             val message = inbound.message
             val target = message?.let { MessageTargets.targetSystem(it) }
             when {
@@ -218,12 +218,13 @@ public class MissionService internal constructor(
                 target != null && target != 0 && target != ourSystem -> null // another ground station's exchange
                 else -> MissionWire.decode(message)
             }
-        }) { inbox ->
+        }) { inbox, watch ->
             var deadline = Long.MAX_VALUE
             var step = start(now())
             try {
                 while (true) {
                     for (message in step.send) vehicle.send(MissionWire.encode(message, identity.systemId, identity.componentId))
+                    if (step.send.isNotEmpty()) watch.sent()
                     when (step.timerNanos) {
                         MissionStep.KEEP_TIMER -> Unit
                         MissionStep.NO_TIMER -> deadline = Long.MAX_VALUE

@@ -45,14 +45,18 @@ public class ParamService internal constructor(
 
     /**
      * Writes [value] to parameter [name] and returns it as the vehicle then reports it. The
-     * parameter's type is read from the vehicle first unless it is known from an earlier exchange.
+     * parameter's type is read from the vehicle first unless it is known from an earlier exchange;
+     * an integer parameter is sent [value] rounded to a whole number (the returned value says so),
+     * and a value its type cannot hold fails with [ParamOutOfRange] before anything is written.
      */
     public suspend fun write(name: String, value: Double): Parameter {
         checkName(name)
         require(value.isFinite()) { "value must be finite, was $value" }
         return exclusive.withLock {
             val type = synchronized(types) { types[name] } ?: exchange(name, null, null).type
-            exchange(name, value, type)
+            val stored = type.stored(value)
+            type.range?.let { range -> if (stored !in range) throw ParamOutOfRange(name, type, value, range) }
+            exchange(name, stored, type)
         }
     }
 
@@ -75,13 +79,16 @@ public class ParamService internal constructor(
         val identity = vehicle.identity.value
         val encoding = encoding
         val machine = ParamExchange(name, writing, type, timing, roundTrip())
-        return vehicle.exchange("parameter $name", { inbound ->
+        return vehicle.exchange("parameter $name", pick = { inbound ->
             val message = inbound.message as? ParamValue
             if (message == null || inbound.frame.componentId != identity.componentId) null else decode(message, encoding)
-        }) { values ->
+        }, giveUpAfter = timing.timeout) { values, watch ->
             var step = machine.start(now())
             while (true) {
-                if (step.send) vehicle.send(request(name, writing, type, encoding, identity.systemId, identity.componentId))
+                if (step.send) {
+                    vehicle.send(request(name, writing, type, encoding, identity.systemId, identity.componentId))
+                    watch.sent()
+                }
                 step.error?.let { throw it }
                 step.result?.let { result ->
                     synchronized(types) { types[name] = result.type }

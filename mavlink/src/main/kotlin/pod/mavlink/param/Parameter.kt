@@ -30,6 +30,27 @@ public enum class ParamType(
     /** True for the integer types. */
     public val isInteger: Boolean get() = this != REAL32 && this != REAL64
 
+    /** The values the type can hold (integers), or null when any finite number fits (floats, and 64-bit integers PARAM_VALUE cannot carry). */
+    public val range: ClosedFloatingPointRange<Double>?
+        get() = when (this) {
+            UINT8 -> 0.0..255.0
+            INT8 -> -128.0..127.0
+            UINT16 -> 0.0..65_535.0
+            INT16 -> -32_768.0..32_767.0
+            UINT32 -> 0.0..4_294_967_295.0
+            INT32 -> -2_147_483_648.0..2_147_483_647.0
+            else -> null
+        }
+
+    /**
+     * The value to send for [value]: for an integer type the nearest whole number, half away from
+     * zero. Left to the autopilot it would be truncated: ArduPilot adds 0.01 and casts
+     * (AP_Param.cpp, AP_Param::set_float: 2.7 is stored as 2), and PX4's bytewise encoding
+     * carries only the integer's bits.
+     */
+    public fun stored(value: Double): Double =
+        if (isInteger) kotlin.math.sign(value) * kotlin.math.floor(kotlin.math.abs(value) + 0.5) else value.toFloat().toDouble()
+
     public companion object {
         /** The type with number [value], or null for a number MAVLink does not define. */
         public fun of(value: Int): ParamType? = entries.firstOrNull { it.mavValue == value }

@@ -17,6 +17,7 @@ import kotlinx.coroutines.async
 import kotlinx.coroutines.awaitAll
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.launch
 import kotlinx.coroutines.withTimeout
 import pod.core.vehicle.VehicleLost
 import pod.mavlink.GroundStation
@@ -93,6 +94,19 @@ class CommandServiceSpec : StringSpec({
         }
     }
 
+    "a line repeated with a trailing tab (PX4's event marker) is still shown once" {
+        withVehicle(answer = { m ->
+            if (m !is CommandLong) emptyList() else listOf(
+                Statustext.builder().severity(MavSeverity.MAV_SEVERITY_CRITICAL).text("Arming denied: mode not armable\t").build(),
+                Statustext.builder().severity(MavSeverity.MAV_SEVERITY_CRITICAL).text("Arming denied: mode not armable").build(),
+                ack(m.command().value(), CommandResult.DENIED),
+            )
+        }) { v, _ ->
+            val error = shouldThrow<CommandRejected> { v.commands.send(VehicleCommand(ARM, param1 = 1f)) }
+            error.message shouldBe "MAV_CMD_COMPONENT_ARM_DISARM was DENIED: Arming denied: mode not armable"
+        }
+    }
+
     "IN_PROGRESS reports progress until the final ACCEPTED, without resending" {
         withVehicle(answer = { m ->
             if (m !is CommandLong) emptyList() else listOf(
@@ -137,6 +151,22 @@ class CommandServiceSpec : StringSpec({
             v.commands.timing = CommandTiming(timeout = 60.seconds)
             sim.silence()
             shouldThrow<VehicleLost> { withTimeout(5.seconds) { v.commands.send(VehicleCommand(ARM)) } }.message shouldContain "MAV_CMD_COMPONENT_ARM_DISARM"
+        }
+    }
+
+    "a command left unanswered is shown as awaited while Pod resends it, and no longer once it ends" {
+        withVehicle(answer = { emptyList() }) { v, _ ->
+            v.commands.timing = CommandTiming(timeout = 4.seconds)
+            val seen = java.util.concurrent.CopyOnWriteArrayList<pod.mavlink.Awaiting>()
+            val watching = launch { v.awaiting.collect { if (it != null) seen += it } }
+            shouldThrow<CommandTimeout> { v.commands.send(VehicleCommand(ARM)) }.message shouldContain Regex("after \\d+ sends and 4\\.\\d s waiting")
+            watching.cancel()
+            v.awaiting.value shouldBe null
+            seen.map { it.what }.toSet() shouldBe setOf("MAV_CMD_COMPONENT_ARM_DISARM")
+            (seen.last().attempt > seen.first().attempt) shouldBe true
+            (seen.first().waited >= 2.seconds) shouldBe true
+            seen.first().giveUpAfter shouldBe 4.seconds
+            seen.first().describe() shouldContain Regex("^no answer to MAV_CMD_COMPONENT_ARM_DISARM from vehicle 1 yet \\(attempt \\d+, \\d\\.\\d s of 4\\.0 s\\)$")
         }
     }
 

@@ -40,7 +40,7 @@ class ParamEncodingTest : StringSpec({
         refused.start(0)
         refused.onValue(Parameter("SYSID_SW_TYPE", 10.0, ParamType.INT8, 0, 1), 1)
         val end = refused.onValue(Parameter("SYSID_SW_TYPE", 10.0, ParamType.INT8, 0, 1), 2)
-        end.error.shouldBeInstanceOf<ParamRejected>().message shouldBe "the vehicle kept SYSID_SW_TYPE = 10.0 instead of 3.0"
+        end.error.shouldBeInstanceOf<ParamRejected>().message shouldBe "the vehicle kept SYSID_SW_TYPE = 10 instead of 3 (read-only, out of its range, or refused)"
     }
 
     "a parameter the vehicle does not have times out with a message saying so" {

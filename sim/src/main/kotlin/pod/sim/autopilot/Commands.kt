@@ -288,6 +288,8 @@ internal class Commands(private val ap: SimAutopilot) {
         if (ap.isPx4) {
             if (!ap.mission.hasMission()) return TEMPORARILY_REJECTED.also { refuse("Mission start denied! No valid mission") }
             val firstItem = cmd.param1.toInt()
+            // PX4 Commander, VEHICLE_CMD_MISSION_START: param1 must be in -1 until the mission's seq_total.
+            if (firstItem >= ap.missionServer.list(pod.mavlink.mission.MissionType.MISSION).size) return DENIED
             if (!ap.armed) {
                 armingProblems().takeIf { it.isNotEmpty() }?.let { problems -> problems.forEach { refuse(it) }; return TEMPORARILY_REJECTED }
                 ap.arm()

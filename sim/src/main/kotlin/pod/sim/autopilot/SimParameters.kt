@@ -76,8 +76,9 @@ internal class SimParameters(private val autopilot: Autopilot, definitions: List
         val def = defs[index]
         return when {
             autopilot == Autopilot.PX4 && def.type.isInteger -> raw.toRawBits().toDouble()
-            // ArduPilot rounds to the nearest integer (half away from zero) when it stores an integer parameter.
-            def.type.isInteger -> if (raw.isFinite()) Math.round(raw.toDouble()).toDouble() else Double.NaN
+            // ArduPilot adds 0.01 away from zero and casts, so it truncates (2.7 -> 2, 2.999 -> 3),
+            // clamped to the type's range (AP_Param.cpp, AP_Param::set_float).
+            def.type.isInteger -> if (raw.isFinite()) (raw + if (raw < 0) -0.01f else 0.01f).toLong().toDouble() else Double.NaN
             else -> raw.toDouble()
         }
     }
