@@ -6,7 +6,9 @@ import io.kotest.matchers.collections.shouldContainExactly
 import io.kotest.matchers.collections.shouldHaveSize
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
+import io.kotest.matchers.string.shouldEndWith
 import io.kotest.matchers.string.shouldNotContain
+import io.kotest.matchers.string.shouldStartWith
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.withContext
@@ -82,6 +84,22 @@ class ScriptRunSpec : StringSpec({
         run.exitCode shouldBe 1
         run.out shouldContainExactly listOf("before")
         run.err.trim() shouldBe "error: latitude must be in -90..90, was 91.0 (throws.main.kts:4)"
+    }
+
+    "a program that Pod fails after it suspended is reported at the line of the failing call, not at `pod {`" {
+        // PickTimeout is made in the engine's coroutine: the only script frame on its stack is the `pod {` call (line 11).
+        val run = pod("run", script("fails-in-program.main.kts"), "--sim", "1", "--time-scale", "10")
+        withClue(run.err) {
+            run.exitCode shouldBe 1
+            run.err.trim() shouldStartWith "error: pick timed out"
+            run.err.trim() shouldEndWith "(fails-in-program.main.kts:15)"
+        }
+    }
+
+    "an exception thrown in a function the program calls is reported at that function's line" {
+        val run = pod("run", script("fails-in-program.main.kts"), "--sim", "1", "--time-scale", "10", "--", "nested")
+        run.exitCode shouldBe 1
+        run.err.trim() shouldBe "error: at most 2 vehicles fly here, asked for 3 (fails-in-program.main.kts:7)"
     }
 
     "a missing script is a clear error with exit code 2" {
