@@ -1,6 +1,7 @@
 package pod.launch
 
 import kotlin.coroutines.Continuation
+import kotlin.coroutines.cancellation.CancellationException
 import kotlin.coroutines.CoroutineContext
 import kotlin.coroutines.intrinsics.COROUTINE_SUSPENDED
 import kotlin.coroutines.intrinsics.createCoroutineUnintercepted
@@ -55,6 +56,7 @@ internal suspend fun <R, T> runLocating(receiver: R, block: suspend R.() -> T): 
     }
 
 private fun note(error: Throwable, program: Continuation<Unit>) {
+    if (error is CancellationException) return // a cancelled program failed nowhere in particular
     // The frame kotlin-stdlib derives from the continuation's debug metadata (file, current label's line).
     val frame = (program as? CoroutineStackFrame)?.getStackTraceElement() ?: return
     if (frame.lineNumber <= 0 || ProgramLocation.of(error) != null) return
