@@ -166,14 +166,19 @@ class MissionExecutorSpec : StringSpec({
             val stoppedHeight = vehicle.telemetry.position.value!!.relativeAltitude.meters
             // Every GLOBAL_POSITION_INT, not the StateFlow, which skips repeats of a vehicle standing still.
             val reports = vehicle.messages.mapNotNull { it.message as? GlobalPositionInt }.map { Location(it.lat() / 1e7, it.lon() / 1e7, (it.relativeAlt() / 1000.0).m) }
+            // Reports come at 4 Hz of the vehicle's own time: settled is 2 s of them within 0.2 m, held is the next 10 s.
             val settled = withTimeout(30.seconds) {
-                var last: Location? = null
-                reports.first { p -> (last?.let { it.distanceTo(p).meters < 0.2 } == true).also { last = p } }
+                val window = ArrayDeque<Location>()
+                reports.first { p ->
+                    window.addLast(p)
+                    if (window.size > 8) window.removeFirst()
+                    window.size == 8 && window.all { it.distanceTo(p).meters < 0.2 }
+                }
             }
             settled.distanceTo(stopped).meters shouldBeLessThan 20.0
             // ArduCopter's LOITER (Pod's hold before) sinks at PILOT_SPEED_UP with no stick input.
             abs(settled.altitude.meters - stoppedHeight) shouldBeLessThan 1.0 // the reports carry the height above home
-            for (p in withTimeout(30.seconds) { reports.take(8).toList() }) {
+            for (p in withTimeout(30.seconds) { reports.take(40).toList() }) {
                 p.distanceTo(settled).meters shouldBeLessThan 1.0
                 abs(p.altitude.meters - settled.altitude.meters) shouldBeLessThan 0.5
             }

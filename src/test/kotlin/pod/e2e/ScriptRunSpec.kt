@@ -6,7 +6,9 @@ import io.kotest.matchers.collections.shouldContainExactly
 import io.kotest.matchers.collections.shouldHaveSize
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
+import io.kotest.matchers.string.shouldEndWith
 import io.kotest.matchers.string.shouldNotContain
+import io.kotest.matchers.string.shouldStartWith
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.withContext
@@ -86,6 +88,22 @@ class ScriptRunSpec : StringSpec({
         run.err.trim() shouldBe "error: latitude must be in -90..90, was 91.0 (throws.main.kts:4)"
     }
 
+    "a program that Pod fails after it suspended is reported at the line of the failing call, not at `pod {`" {
+        // PickTimeout is made in the engine's coroutine: the only script frame on its stack is the `pod {` call (line 11).
+        val run = pod("run", script("fails-in-program.main.kts"), "--sim", "1", "--time-scale", "10")
+        withClue(run.err) {
+            run.exitCode shouldBe 1
+            run.err.trim() shouldStartWith "error: pick timed out"
+            run.err.trim() shouldEndWith "(fails-in-program.main.kts:15)"
+        }
+    }
+
+    "an exception thrown in a function the program calls is reported at that function's line" {
+        val run = pod("run", script("fails-in-program.main.kts"), "--sim", "1", "--time-scale", "10", "--", "nested")
+        run.exitCode shouldBe 1
+        run.err.trim() shouldBe "error: at most 2 vehicles fly here, asked for 3 (fails-in-program.main.kts:7)"
+    }
+
     "a missing script is a clear error with exit code 2" {
         val run = pod("run", "no-such-script.main.kts", "--sim", "3")
         run.exitCode shouldBe 2
@@ -135,15 +153,18 @@ class ScriptRunSpec : StringSpec({
     }
 
     "the README's Programs example runs unchanged against two vehicles reached with --connect" {
-        val readme = File("../README.md").readText()
-        val program = File(script("readme-programs.main.kts")).readLines().dropWhile { it != "pod {" }.drop(1).dropLast(1)
-        program.size shouldBe 8
-        program.forEach { readme shouldContain it } // the script's program is the README's, line for line
-        val run = connected(script("readme-programs.main.kts"), 2)
+        val program = MarkdownKotlin.blocks(File("../README.md")).single { block -> block.code.any { it.startsWith("pod {") } }
+        val file = Files.createTempFile("readme-programs", ".main.kts").toFile().apply { writeText(program.script) }
+        val run = try {
+            connected(file.path, 2)
+        } finally {
+            file.delete()
+        }
         withClue({ run.err + run.out.joinToString("\n") }) {
             run.err shouldNotContain "NullPointerException"
             run.exitCode shouldBe 0
-            run.out.any { it.contains("done   home on [copter-1, copter-2]") } shouldBe true
+            run.out.any { it.contains("done   home on [copter-1]") } shouldBe true
+            run.out.any { it.contains("done   home on [copter-2]") } shouldBe true
         }
     }
 })

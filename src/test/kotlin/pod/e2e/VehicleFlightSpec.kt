@@ -101,15 +101,16 @@ class VehicleFlightSpec : StringSpec({
                 vehicle.action.pauseMission()
                 // Every GLOBAL_POSITION_INT (4 Hz), not the StateFlow, which skips repeats of a vehicle standing still.
                 val reports = vehicle.messages.mapNotNull { it.message as? GlobalPositionInt }.map { Location(it.lat() / 1e7, it.lon() / 1e7, (it.relativeAlt() / 1000.0).m) }
+                // Reports come at 4 Hz of the vehicle's own time: settled is 2 s of them within 0.3 m, held is the next 30 s.
                 val settled = withTimeout(30.seconds) {
-                    var last: Location? = null
+                    val window = ArrayDeque<Location>()
                     reports.first { p ->
-                        val previous = last
-                        last = p
-                        previous != null && previous.distanceTo(p).meters < 0.3
+                        window.addLast(p)
+                        if (window.size > 8) window.removeFirst()
+                        window.size == 8 && window.all { it.distanceTo(p).meters < 0.3 }
                     }
                 }
-                val held = withTimeout(30.seconds) { reports.take(12).toList() }
+                val held = withTimeout(30.seconds) { reports.take(120).toList() }
                 for (p in held) {
                     p.distanceTo(settled).meters shouldBeLessThan 1.0
                     abs(p.altitude.meters - settled.altitude.meters) shouldBeLessThan 0.5

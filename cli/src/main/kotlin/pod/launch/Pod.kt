@@ -40,7 +40,7 @@ fun <T> pod(choice: FleetChoice = FleetChoice.fromSystemProperties(), print: (St
             when (choice) {
                 is FleetChoice.Sim -> simulate(List(choice.count) { SimFlavor.ARDUCOPTER }, choice.timeScale, onLine = print, onEvent = madeSafe::note) {
                     val program = this
-                    Interruption.cancellable { program.block() }
+                    Interruption.cancellable { runLocating(program, block) }
                 }.first
                 is FleetChoice.Connect -> {
                     val station = GroundStation.open(choice.address, this)
@@ -57,7 +57,7 @@ fun <T> pod(choice: FleetChoice = FleetChoice.fromSystemProperties(), print: (St
                             val names = { id: Int -> platform.vehicles.value.firstOrNull { it.id == id }?.name ?: "vehicle $id" }
                             Engine(platform).runShowing(names, onLine = print, onEvent = madeSafe::note) {
                                 val program = this
-                                Interruption.cancellable { program.block() }
+                                Interruption.cancellable { runLocating(program, block) }
                             }
                         } finally {
                             booting.cancel()

@@ -56,7 +56,8 @@ import pod.sim.autopilot.SimOutput
 /**
  * A simulated MAVLink vehicle on its own UDP socket, sending to a ground station as SITL's
  * `--out` does: HEARTBEAT at 1 Hz and telemetry streams at rates a ground station can change
- * with MAV_CMD_SET_MESSAGE_INTERVAL.
+ * with MAV_CMD_SET_MESSAGE_INTERVAL, both in the vehicle's own (simulated) time, as SITL run with
+ * a speed-up sends them.
  *
  * All its coroutines run one at a time (a single-threaded view of the default dispatcher), so its
  * state needs no locks. [start] and [stop] may be called repeatedly: a restarted vehicle comes
@@ -120,6 +121,14 @@ public class SimVehicle(
     public val statusTexts: SharedFlow<String> = _texts.asSharedFlow()
     private var link: MavlinkLink? = null
 
+    /**
+     * Simulated time since the vehicle was made: the clock its flight, battery and message rates
+     * follow (it stands still while the vehicle is stopped).
+     */
+    public val clock: Duration get() = simulatedSeconds.seconds
+
+    @Volatile private var simulatedSeconds = 0.0
+
     /** The simulated state, updated after every physics tick and every handled message while running. */
     public val state: StateFlow<SimState> = _state.asStateFlow()
 
@@ -148,7 +157,7 @@ public class SimVehicle(
         this.scope = scope
         scope.launch { receive(link) }
         scope.launch { physics() }
-        scope.launch { every(1.seconds) { send(messages.heartbeat(autopilot.state())) } }
+        scope.launch { every(sendPeriod(1.0)) { send(messages.heartbeat(autopilot.state())) } }
         for ((id, hz) in rates.value) restartStream(scope, id, hz)
     }
 
@@ -191,6 +200,7 @@ public class SimVehicle(
         val outputs = autopilot.drain()
         val s = autopilot.state()
         _state.value = s
+        simulatedSeconds = autopilot.time
         for (out in outputs) {
             when (out) {
                 is SimOutput.Photo -> _photos.value = _photos.value + out.photo
@@ -206,7 +216,7 @@ public class SimVehicle(
         streams.remove(messageId)?.cancel()
         if (hz <= 0) return
         streams[messageId] = scope.launch(CoroutineName("stream-$messageId")) {
-            every((1.0 / hz).seconds) { messages.build(messageId, autopilot.state())?.let { send(it) } }
+            every(sendPeriod(hz)) { messages.build(messageId, autopilot.state())?.let { send(it) } }
         }
     }
 
@@ -345,6 +355,18 @@ public class SimVehicle(
         link.sendToAll(encoder.encode(message, config.systemId, config.componentId, sequences.next(config.systemId, config.componentId)))
     }
 
+    /**
+     * The wall-clock period of what the vehicle sends [hz] times per second of its own time. A
+     * simulated autopilot runs on its simulated clock, as ArduPilot SITL does (AP_HAL::micros64()
+     * and millis64() return the scheduler's stopped_clock_usec(), the simulation's time, so every
+     * scheduled send follows it: libraries/AP_HAL_SITL/system.cpp): at time scale 40 a 1 Hz
+     * HEARTBEAT comes every 25 ms, and a confirmation that waits for the next heartbeat costs a
+     * simulated second, not forty. A vehicle slower than real time keeps real-time rates (a ground
+     * station must not take it for lost), and no stream is sent more often than every
+     * [MIN_SEND_PERIOD] of wall time, which bounds the datagrams a fast fleet sends.
+     */
+    private fun sendPeriod(hz: Double): Duration = sendPeriod(hz, config.timeScale)
+
     private suspend inline fun every(period: Duration, action: () -> Unit): Nothing {
         while (true) {
             action()
@@ -352,8 +374,18 @@ public class SimVehicle(
         }
     }
 
-    private companion object {
+    internal companion object {
         val TICK = 20.milliseconds
         const val MAX_STEPS_PER_TICK = 2000
+
+        /** With a time scale above 1, at most 50 sends a second per stream (see [sendPeriod]). */
+        val MIN_SEND_PERIOD = 20.milliseconds
+
+        /** The wall-clock period of a [hz] stream of a vehicle whose clock runs [timeScale] times real time. */
+        fun sendPeriod(hz: Double, timeScale: Double): Duration {
+            val real = (1.0 / hz).seconds
+            if (timeScale <= 1.0) return real
+            return (real / timeScale).coerceAtLeast(minOf(real, MIN_SEND_PERIOD))
+        }
     }
 }

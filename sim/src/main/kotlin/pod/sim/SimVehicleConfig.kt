@@ -11,8 +11,10 @@ import kotlin.time.Duration.Companion.seconds
 /**
  * How a [SimVehicle] looks on the wire and how it behaves.
  *
- * [timeScale] speeds up the simulated world (flight, battery) relative to the wall clock; message
- * rates stay in wall-clock time, so a ground station sees an ordinary link.
+ * [timeScale] speeds up the simulated world (flight, battery) relative to the wall clock, and the
+ * messages it streams with it: at 40 a 1 Hz HEARTBEAT comes every 25 ms of wall time, as from
+ * ArduPilot SITL run with a speed-up (no stream faster than 50 Hz of wall time; below 1, the
+ * real-time rates).
  */
 public data class SimVehicleConfig(
     /** MAVLink system id, 1..254. */
@@ -32,7 +34,8 @@ public data class SimVehicleConfig(
     /** Simulated seconds per wall-clock second. */
     public val timeScale: Double = 1.0,
     /**
-     * Message id → rate in Hz of the streams it sends before anyone asks (HEARTBEAT is always 1 Hz):
+     * Message id → rate in Hz of simulated time of the streams it sends before anyone asks
+     * (HEARTBEAT is always 1 Hz):
      * by default what the autopilot it plays sends on a fresh telemetry link ([defaultStreamRates]).
      */
     public val streamRates: Map<Int, Double> = defaultStreamRates(autopilot, type),

@@ -3,6 +3,7 @@ package pod.cli.script
 import org.jetbrains.kotlin.mainKts.MainKtsConfigurator
 import org.jetbrains.kotlin.mainKts.MainKtsEvaluationConfiguration
 import org.jetbrains.kotlin.mainKts.MainKtsScript
+import pod.launch.ProgramLocation
 import java.io.File
 import kotlin.script.experimental.api.EvaluationResult
 import kotlin.script.experimental.api.RefineConfigurationOnAnnotationsData
@@ -96,12 +97,19 @@ internal class ScriptHost(private val classpath: List<File>, private val cacheDi
 
     private fun outcome(evaluation: EvaluationResult, script: File): ScriptOutcome =
         when (val value = evaluation.returnValue) {
-            is ResultValue.Error -> ScriptOutcome.Threw(
-                value.error,
-                value.error.stackTrace.firstOrNull { it.fileName == script.name }?.lineNumber?.takeIf { it > 0 },
-            )
+            is ResultValue.Error -> ScriptOutcome.Threw(value.error, lineOf(value.error, script))
             else -> ScriptOutcome.Completed
         }
+
+    /**
+     * The script's line that failed: where a `pod { }` program was suspended when Pod failed its
+     * call ([ProgramLocation]), else the deepest frame of the script in the stack trace.
+     */
+    private fun lineOf(error: Throwable, script: File): Int? {
+        val frame = ProgramLocation.of(error)?.takeIf { it.fileName == script.name }
+            ?: error.stackTrace.firstOrNull { it.fileName == script.name }
+        return frame?.lineNumber?.takeIf { it > 0 }
+    }
 
     private fun render(d: ScriptDiagnostic, script: File): String {
         val where = buildString {
