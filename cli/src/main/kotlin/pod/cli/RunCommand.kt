@@ -62,7 +62,8 @@ internal class RunCommand : CliktCommand(name = "run") {
         }
         when (outcome) {
             ScriptOutcome.Completed -> Unit
-            is ScriptOutcome.CompileFailed -> throw CliktError(outcome.messages.joinToString("\n"), statusCode = 1)
+            // A script that does not compile is bad input, like a malformed file: exit 2.
+            is ScriptOutcome.CompileFailed -> throw CliktError(outcome.messages.joinToString("\n"), statusCode = Exit.USAGE)
             is ScriptOutcome.Threw -> {
                 interruptionIn(outcome.error)?.let { throw stopped(it.signal) }
                 // The link named by --connect could not be opened (taken since the check above).
