@@ -44,7 +44,7 @@ internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo"
         "Dolphin's Listing 4 on simulated drones: two kept on survey, each replaced by a charged one when its battery runs low."
 
     override fun run() = runBlocking {
-        val view = LiveView(out, json, period = if (json) 20.seconds else 5.seconds, redraw = !json && System.console() != null)
+        val view = LiveView(out, json, period = if (json) 20.seconds else 5.seconds)
         var failed: Throwable? = null
         try {
             simulate(
@@ -60,7 +60,7 @@ internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo"
                     Interruption.cancellable { listing4(duration = length) }
                 } finally {
                     shown.cancel()
-                    view.render(sim.station)
+                    view.finish(sim.station)
                 }
             }
         } catch (e: CliktError) {

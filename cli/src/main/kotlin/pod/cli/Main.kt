@@ -13,8 +13,8 @@ fun interface Output {
     fun line(text: String)
 }
 
-/** The `pod` command. */
-class Pod(out: Output = Output { println(it) }) : CliktCommand(name = "pod") {
+/** The `pod` command; [out] is standard output for people unless a caller (a test) reads the lines itself. */
+class Pod(out: Output = TerminalOutput.standard()) : CliktCommand(name = "pod") {
     init {
         subcommands(listOf(SimCommand(out), WatchCommand(out), DemoCommand(out), RunCommand(), MissionGroup(out), ParamGroup(out)) + actionCommands(out))
     }

@@ -128,7 +128,6 @@ internal abstract class VehicleCommandBase(protected val out: Output, name: Stri
 
     /** The closing line: [text] for people, a `done` JSON object with [json] fields for scripts. */
     protected fun finish(text: String, vararg json: Pair<String, Any?>) {
-        if (System.console() != null && !this.json) println()
         out.line(if (this.json) jsonLine("event" to "done", *json) else text)
     }
 

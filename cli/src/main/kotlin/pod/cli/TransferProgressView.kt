@@ -1,0 +1,92 @@
+package pod.cli
+
+import com.github.ajalt.mordant.animation.progress.MultiProgressBarAnimation
+import com.github.ajalt.mordant.animation.progress.ProgressTask
+import com.github.ajalt.mordant.animation.progress.addTask
+import com.github.ajalt.mordant.widgets.progress.progressBar
+import com.github.ajalt.mordant.widgets.progress.progressBarLayout
+import com.github.ajalt.mordant.widgets.progress.speed
+import com.github.ajalt.mordant.widgets.progress.text
+import com.github.ajalt.mordant.widgets.progress.timeRemaining
+import pod.mavlink.mission.TransferProgress
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.TimeSource
+
+/**
+ * Shows a mission transfer's progress to people, and nothing until its total is known (a
+ * download learns it from the vehicle's MISSION_COUNT; before that the protocol reports 0 of 0).
+ *
+ * At an interactive terminal ([Output.liveTerminal]): a Mordant progress bar with items done of
+ * the total, the rate in items per second and the time left, redrawn on each [update] and [tick].
+ * Elsewhere: a plain line when the total becomes known and one as each quarter is passed
+ * ("uploading 13/50 items (26%)").
+ */
+internal class TransferProgressView(
+    private val out: Output,
+    private val action: String,
+    private val timeSource: TimeSource.WithComparableMarks = TimeSource.Monotonic,
+) {
+    private val terminal = out.liveTerminal
+    private var animation: MultiProgressBarAnimation? = null
+    private var task: ProgressTask<Unit>? = null
+    private var lastQuarter = -1
+
+    /** Whether the view draws in place, so that [tick] is worth calling while the vehicle is quiet. */
+    val animated: Boolean get() = terminal != null
+
+    /** Shows [p]; a report without a total (0 of 0) shows nothing. */
+    fun update(p: TransferProgress) {
+        if (p.total <= 0) return
+        if (terminal == null) {
+            val quarter = p.done * 4 / p.total
+            if (quarter != lastQuarter) {
+                lastQuarter = quarter
+                out.line("$action ${p.done}/${p.total} items (${p.done * 100 / p.total}%)")
+            }
+            return
+        }
+        val bar = animation ?: MultiProgressBarAnimation(terminal, timeSource = timeSource).also { animation = it }
+        val current = task
+        if (current == null) {
+            task = bar.addTask(layout(), total = p.total.toLong(), completed = p.done.toLong())
+        } else {
+            if (current.finished) return
+            current.update {
+                completed = p.done.toLong()
+                total = p.total.toLong()
+            }
+        }
+        // A finished bar stops itself on this refresh and stays on screen.
+        bar.refresh()
+    }
+
+    /** Redraws the bar, so that the rate and the time left move on while no item arrives. */
+    fun tick() {
+        val bar = animation ?: return
+        if (task?.finished == false) bar.refresh()
+    }
+
+    /** Leaves the bar as it is on screen (a cancelled or failed transfer's too); what is printed next goes under it. */
+    fun finish() {
+        val bar = animation ?: return
+        if (task?.finished == false) {
+            bar.refresh(refreshAll = true)
+            bar.stop()
+        }
+    }
+
+    private fun layout() = progressBarLayout {
+        text(action)
+        progressBar()
+        // Mordant's completed() abbreviates (1.2K); a mission's items are counted exactly.
+        text { "$completed/${total ?: "?"} items" }
+        speed(suffix = " items/s")
+        timeRemaining()
+    }
+
+    companion object {
+        /** How often [tick] is worth calling. */
+        val TICK: Duration = 200.milliseconds
+    }
+}
