@@ -3,9 +3,11 @@ package pod.cli
 import com.github.ajalt.mordant.animation.progress.MultiProgressBarAnimation
 import com.github.ajalt.mordant.animation.progress.ProgressTask
 import com.github.ajalt.mordant.animation.progress.addTask
+import com.github.ajalt.mordant.rendering.TextAlign
 import com.github.ajalt.mordant.widgets.progress.progressBar
 import com.github.ajalt.mordant.widgets.progress.progressBarLayout
 import com.github.ajalt.mordant.widgets.progress.speed
+import com.github.ajalt.mordant.widgets.progress.marquee
 import com.github.ajalt.mordant.widgets.progress.text
 import com.github.ajalt.mordant.widgets.progress.timeRemaining
 import pod.mavlink.mission.TransferProgress
@@ -47,18 +49,19 @@ internal class TransferProgressView(
             return
         }
         val bar = animation ?: MultiProgressBarAnimation(terminal, timeSource = timeSource).also { animation = it }
-        val current = task
-        if (current == null) {
-            task = bar.addTask(layout(), total = p.total.toLong(), completed = p.done.toLong())
-        } else {
-            if (current.finished) return
-            current.update {
+        val existing = task
+        val current = existing ?: bar.addTask(layout(p.total), total = p.total.toLong(), completed = p.done.toLong()).also { task = it }
+        if (existing != null) {
+            if (existing.finished) return
+            existing.update {
                 completed = p.done.toLong()
                 total = p.total.toLong()
             }
         }
-        // A finished bar stops itself on this refresh and stays on screen.
-        bar.refresh()
+        // Mordant redraws each cell at most a few times a second; the last frame must show the
+        // last count, not one cached a moment before. A finished bar stops itself on this refresh
+        // and stays on screen.
+        bar.refresh(refreshAll = current.finished)
     }
 
     /** Redraws the bar, so that the rate and the time left move on while no item arrives. */
@@ -76,13 +79,16 @@ internal class TransferProgressView(
         }
     }
 
-    private fun layout() = progressBarLayout {
+    private fun layout(total: Int) = progressBarLayout {
         text(action)
         progressBar()
-        // Mordant's completed() abbreviates (1.2K); a mission's items are counted exactly.
-        text { "$completed/${total ?: "?"} items" }
+        // Mordant's completed() abbreviates (1.2K); a mission's items are counted exactly, in a
+        // cell of fixed width (a text cell is squeezed by the bar, and the bar would jump as
+        // digits are added).
+        marquee(width = "$total/$total items".length, fps = textFps, align = TextAlign.RIGHT) { "$completed/$total items" }
         speed(suffix = " items/s")
-        timeRemaining()
+        // Once done, how long it took instead of an empty estimate.
+        timeRemaining(elapsedWhenFinished = true)
     }
 
     companion object {

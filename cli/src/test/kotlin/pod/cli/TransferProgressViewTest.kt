@@ -76,7 +76,26 @@ class TransferProgressViewTest : StringSpec({
         out.line("uploaded 4 mission items to vehicle 1")
         val text = recorder.output()
         Regex("4/4 items").findAll(text).count() shouldBe 1 // neither the tick nor finish() drew it again
+        text shouldContain "in 0:00:04" // how long it took
         text.trimEnd().lines().last() shouldBe "uploaded 4 mission items to vehicle 1"
+    }
+
+    "a fast transfer's last frame shows its last count, not one Mordant cached a moment before" {
+        val (terminal, recorder) = recordingTerminal(interactive = true)
+        val view = TransferProgressView(TerminalOutput(terminal), "downloading", TestTimeSource())
+        for (done in 0..300) view.update(TransferProgress(done, 300)) // all within one frame's time
+        view.finish()
+        val frames = recorder.output().split("\r")
+        frames.last() shouldContain "300/300 items"
+        frames.count { "300/300" in it } shouldBe 1
+    }
+
+    "a transfer already complete at its first report still shows its bar" {
+        val (terminal, recorder) = recordingTerminal(interactive = true)
+        val view = TransferProgressView(TerminalOutput(terminal), "uploading", TestTimeSource())
+        view.update(TransferProgress(3, 3))
+        view.finish()
+        recorder.output() shouldContain "3/3 items"
     }
 
     "a transfer cut short leaves its bar where it stopped" {
