@@ -43,9 +43,7 @@ class FleetViewTest : StringSpec({
         for (value in listOf("quadrotor", "ardupilot", "connected", "41.1785123", "-8.5957456", "120.0 m", "98%", "GUIDED", "yes", "100%")) copter shouldContain value
         lines[3] shouldContain "LOST"
         // Left-aligned columns start where their header starts; right-aligned ones end where it ends.
-        for (row in lines.drop(1)) {
-            row.indexOf(if (row === lines[3]) "AUTO.MISSION" else if (row === lines[2]) "MANUAL" else "GUIDED") shouldBe header.indexOf("MODE")
-        }
+        lines.drop(1).zip(listOf("GUIDED", "MANUAL", "AUTO.MISSION")).forEach { (row, mode) -> row.indexOf(mode) shouldBe header.indexOf("MODE") }
         copter.indexOf("98%") + "98%".length shouldBe header.indexOf("BATT") + "BATT".length
         lines[2].indexOf("12%") + "12%".length shouldBe header.indexOf("BATT") + "BATT".length
     }
