@@ -11,6 +11,7 @@ import io.kotest.matchers.ints.shouldBeGreaterThanOrEqual
 import io.kotest.matchers.nulls.shouldNotBeNull
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
+import io.kotest.matchers.string.shouldNotContain
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.async
 import kotlinx.coroutines.coroutineScope
@@ -21,6 +22,8 @@ import kotlinx.coroutines.withTimeout
 import pod.cli.Pod
 import pod.cli.json.Event
 import pod.e2e.Python.stop
+import pod.sim.SimVehicle
+import pod.sim.SimVehicleConfig
 import java.net.DatagramSocket
 import kotlin.concurrent.thread
 import kotlin.time.Duration.Companion.seconds
@@ -55,6 +58,31 @@ class CliSpec : StringSpec({
             watch.await()
             // Every line the watcher printed is one of the model's events.
             out.events.map { it::class }.toSet() shouldContainAll setOf(Event.Listening::class, Event.Found::class, Event.Telemetry::class, Event.Lost::class)
+        }
+    }
+
+    "pod watch for people, into a pipe: plain table lines with the vehicle's row, events as lines, no escapes" {
+        coroutineScope {
+            val out = Captured()
+            val watch = async(Dispatchers.IO) {
+                Pod(out).parse(listOf("watch", "--connect", "udpin:127.0.0.1:0", "--duration", "8s", "--lost-after", "1s"))
+            }
+            val listening = withTimeout(20.seconds) { out.flow.first { it.startsWith("listening on") } }
+            val port = Regex("local port (\\d+)").find(listening)!!.groupValues[1].toInt()
+            val sim = SimVehicle(SimVehicleConfig(systemId = 21, gcs = "udpout://127.0.0.1:$port"))
+            try {
+                sim.start(this)
+                withTimeout(10.seconds) { out.flow.first { it == "found vehicle 21: quadrotor on ardupilot" } }
+                val row = withTimeout(10.seconds) { out.flow.first { it.trimStart().startsWith("21 ") } }
+                row.split(Regex(" +")).filter { it.isNotEmpty() }.take(4) shouldBe listOf("21", "quadrotor", "ardupilot", "connected")
+            } finally {
+                sim.stop()
+            }
+            // Durations for people are rounded seconds, not milliseconds.
+            withTimeout(10.seconds) { out.flow.first { it.startsWith("LOST vehicle 21") } } shouldContain Regex("silent for \\d+\\.\\d s$")
+            watch.await()
+            out.lines.filter { "SYSID" in it }.size shouldBeGreaterThanOrEqual 1
+            out.lines.joinToString("\n") shouldNotContain "\u001b"
         }
     }
 

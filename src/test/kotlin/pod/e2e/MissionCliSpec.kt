@@ -8,6 +8,7 @@ import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import io.kotest.matchers.types.shouldBeInstanceOf
+import io.kotest.matchers.string.shouldNotContain
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.withContext
@@ -73,6 +74,35 @@ class MissionCliSpec : StringSpec({
                 }
                 said.lines.last() shouldContain "cleared the mission list of vehicle 12"
                 sim.missionServer.list(MissionType.MISSION).shouldBeEmpty()
+            } finally {
+                sim.stop()
+                dir.toFile().deleteRecursively()
+            }
+        }
+    }
+
+    "for people a transfer's progress shows only once its total is known: a download waits for the vehicle's count" {
+        coroutineScope {
+            val port = freePort()
+            val sim = SimVehicle(SimVehicleConfig(systemId = 14, autopilot = Autopilot.PX4, gcs = "udpout://127.0.0.1:$port"))
+            val dir = Files.createTempDirectory("pod-mission-progress")
+            try {
+                sim.start(this)
+                val upload = dir.resolve("plan.waypoints").also { WplFile.write(it, waypoints(25)) }
+                val connect = listOf("--connect", "udpin:127.0.0.1:$port")
+                val up = Lines()
+                withContext(Dispatchers.IO) { Pod(up).parse(listOf("mission", "upload", upload.toString()) + connect) }
+                up.lines.first() shouldBe "uploading 0/25 items (0%)"
+                up.lines.last() shouldBe "uploaded 25 mission items to vehicle 14"
+
+                val down = Lines()
+                withContext(Dispatchers.IO) { Pod(down).parse(listOf("mission", "download", dir.resolve("back.waypoints").toString()) + connect) }
+                val progress = down.lines.filter { it.startsWith("downloading") }
+                progress.none { "/0" in it } shouldBe true // no bar, full or empty, before MISSION_COUNT
+                progress.first() shouldBe "downloading 0/25 items (0%)"
+                progress.last() shouldBe "downloading 25/25 items (100%)"
+                progress.size shouldBe progress.toSet().size
+                down.lines.joinToString("\n") shouldNotContain "\u001b"
             } finally {
                 sim.stop()
                 dir.toFile().deleteRecursively()

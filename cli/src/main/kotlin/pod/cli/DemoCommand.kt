@@ -47,7 +47,7 @@ internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo"
     override fun run() = runBlocking {
         // The map is written at the end: a path that cannot take it fails now, not after the flight.
         LocalFiles.checkWritable(map.toString())
-        val view = LiveView(out, json, period = if (json) 20.seconds else 5.seconds, redraw = !json && System.console() != null)
+        val view = LiveView(out, json, period = if (json) 20.seconds else 5.seconds)
         var failed: Throwable? = null
         try {
             simulate(
@@ -63,7 +63,7 @@ internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo"
                     Interruption.cancellable { listing4(duration = length) }
                 } finally {
                     shown.cancel()
-                    view.render(sim.station)
+                    view.finish(sim.station)
                 }
             }
         } catch (e: CliktError) {

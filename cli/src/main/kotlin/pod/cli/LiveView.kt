@@ -1,5 +1,11 @@
 package pod.cli
 
+import com.github.ajalt.mordant.animation.Animation
+import com.github.ajalt.mordant.animation.animation
+import com.github.ajalt.mordant.rendering.TextStyle
+import com.github.ajalt.mordant.rendering.Widget
+import com.github.ajalt.mordant.table.verticalLayout
+import com.github.ajalt.mordant.widgets.Text
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.onSubscription
@@ -13,17 +19,22 @@ import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
 
 /**
- * Shows a ground station's fleet until cancelled: for people a table redrawn every [period] with
- * the latest events under it; with [json], one JSON object per event as it happens and one
- * telemetry object per vehicle every [period].
+ * Shows a ground station's fleet until cancelled.
+ *
+ * At an interactive terminal ([Output.liveTerminal]) a Mordant animation redraws the fleet table in
+ * place every [period], in colour, with the latest events under it. Anywhere else (a pipe, a file,
+ * the tests' [Output]) the table is printed as plain lines every [period] and each event as a line
+ * when it happens. With [json], one JSON object per event as it happens and one telemetry object
+ * per vehicle every [period].
  */
 internal class LiveView(
     private val out: Output,
     private val json: Boolean,
     private val period: Duration = 1.seconds,
-    private val redraw: Boolean = System.console() != null,
 ) {
-    private val recent = ArrayDeque<String>()
+    private val animation: Animation<Widget>? = out.liveTerminal?.takeIf { !json }?.animation { it }
+    private val recent = ArrayDeque<Pair<String, TextStyle?>>()
+    private var rows: List<VehicleRow> = emptyList()
 
     suspend fun show(gcs: GroundStation): Nothing = coroutineScope {
         val announced = HashSet<Int>()
@@ -31,12 +42,7 @@ internal class LiveView(
             // Vehicles found before we subscribed are announced once, right after subscribing.
             gcs.events.onSubscription { gcs.vehicles.value.values.forEach { emit(FleetEvent.Found(it)) } }.collect { event ->
                 if (event is FleetEvent.Found && !announced.add(event.vehicle.systemId)) return@collect
-                if (json) {
-                    out.line(EventJson.encode(event.toEvent()))
-                } else {
-                    val line = FleetView.eventLine(event)
-                    if (redraw) remember(line) else out.line(line)
-                }
+                if (json) out.line(EventJson.encode(event.toEvent())) else note(FleetView.eventLine(event), FleetView.eventStyle(event))
             }
         }
         while (true) {
@@ -48,31 +54,58 @@ internal class LiveView(
     }
 
     fun render(gcs: GroundStation) {
-        val vehicles = gcs.vehicles.value.values
-        if (json) {
-            vehicles.sortedBy { it.systemId }.forEach { out.line(EventJson.encode(telemetryEvent(it))) }
-            return
-        }
-        val table = FleetView.table(vehicles)
-        if (redraw) {
-            out.line(CLEAR_SCREEN + (table + "" + recent).joinToString("\n"))
+        val vehicles = gcs.vehicles.value.values.sortedBy { it.systemId }
+        if (json) vehicles.forEach { out.line(EventJson.encode(telemetryEvent(it))) } else draw(vehicles.map(FleetView::row))
+    }
+
+    /** Shows the table of [rows]: redrawn in place at a terminal, printed as plain lines elsewhere. */
+    @Synchronized
+    fun draw(rows: List<VehicleRow>) {
+        this.rows = rows
+        val live = animation
+        if (live != null) {
+            live.update(frame())
         } else {
-            table.forEach(out::line)
+            FleetView.plainLines(FleetView.table(rows)).forEach(out::line)
             out.line("")
         }
     }
 
-    fun note(text: String) {
+    /** Says [text] for people: under the live table at a terminal, as its own line elsewhere; nothing with --json. */
+    @Synchronized
+    fun note(text: String, style: TextStyle? = null) {
         if (json) return
-        if (redraw) remember(text) else out.line(text)
+        val live = animation
+        if (live == null) {
+            out.line(text)
+            return
+        }
+        recent.addLast(text to style)
+        while (recent.size > RECENT_EVENTS) recent.removeFirst()
+        live.update(frame())
     }
 
-    private fun remember(line: String) {
-        recent.addLast(line)
-        while (recent.size > 8) recent.removeFirst()
+    /** Draws [gcs]'s fleet a last time and [stop]s. */
+    @Synchronized
+    fun finish(gcs: GroundStation) {
+        render(gcs)
+        stop()
+    }
+
+    /** Leaves the last frame on screen: what is printed next goes under it, not above a redrawn table. */
+    @Synchronized
+    fun stop() {
+        animation?.stop()
+    }
+
+    private fun frame(): Widget = verticalLayout {
+        cell(FleetView.table(rows))
+        cell("")
+        recent.forEach { (text, style) -> cell(Text(style?.invoke(text) ?: text)) }
     }
 
     private companion object {
-        const val CLEAR_SCREEN = "\u001b[H\u001b[2J"
+        /** How many of the latest events show under the live table. */
+        const val RECENT_EVENTS = 8
     }
 }

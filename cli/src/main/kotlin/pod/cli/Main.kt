@@ -17,8 +17,8 @@ fun interface Output {
     fun line(text: String)
 }
 
-/** The `pod` command. */
-class Pod(out: Output = Output { println(it) }) : CliktCommand(name = "pod") {
+/** The `pod` command; [out] is standard output for people unless a caller (a test) reads the lines itself. */
+class Pod(out: Output = TerminalOutput.standard()) : CliktCommand(name = "pod") {
     init {
         // Every option's help says its default; subcommands inherit the formatter from this context.
         configureContext { helpFormatter = { MordantHelpFormatter(it, showDefaultValues = true) } }
@@ -63,7 +63,7 @@ internal inline fun <T> reportingLinkErrors(block: () -> T): T = try {
  */
 fun run(
     args: List<String>,
-    out: Output = Output { println(it) },
+    out: Output = TerminalOutput.standard(),
     err: Output = Output { System.err.println(it) },
     debug: Boolean = System.getenv("POD_DEBUG") == "1",
 ): Int {

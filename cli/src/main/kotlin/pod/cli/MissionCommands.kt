@@ -8,6 +8,9 @@ import com.github.ajalt.clikt.parameters.options.default
 import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.choice
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.launch
 import pod.cli.json.Event
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.mission.InvalidMission
@@ -37,27 +40,30 @@ internal abstract class MissionAction(out: Output, name: String) : VehicleComman
     protected val type by option("--type", help = "which list").choice("mission" to MissionType.MISSION, "fence" to MissionType.FENCE, "rally" to MissionType.RALLY)
         .default(MissionType.MISSION, defaultForHelp = "mission")
 
-    /** Reports progress: a bar redrawn in place for people at a terminal, JSON lines for scripts. */
-    protected fun progress(action: String): (TransferProgress) -> Unit {
-        var last = -1
-        val terminal = System.console() != null
-        return { p ->
-            if (p.done != last) {
-                last = p.done
-                when {
-                    json -> emit(Event.Progress(action, p.done, p.total))
-                    terminal -> print("\r$action ${bar(p)}")
-                    p.done == p.total || p.total == 0 || p.done * 4 / p.total != (p.done - 1) * 4 / p.total ->
-                        out.line("$action ${bar(p)}")
+    /**
+     * Runs [transfer], reporting its progress: a [TransferProgressView] for people (a bar at a
+     * terminal, a few lines elsewhere, once the total is known), a JSON line per item for scripts.
+     */
+    protected suspend fun <T> withProgress(action: String, transfer: suspend (onProgress: (TransferProgress) -> Unit) -> T): T {
+        if (json) {
+            var last = -1
+            return transfer { p ->
+                if (p.done != last) {
+                    last = p.done
+                    emit(Event.Progress(action, p.done, p.total))
                 }
             }
         }
-    }
-
-    private fun bar(p: TransferProgress): String {
-        val width = 30
-        val filled = if (p.total == 0) width else p.done * width / p.total
-        return "[" + "#".repeat(filled) + ".".repeat(width - filled) + "] ${p.done}/${p.total}"
+        val view = TransferProgressView(out, action)
+        return coroutineScope {
+            val ticker = if (view.animated) launch { while (true) { delay(TransferProgressView.TICK); view.tick() } } else null
+            try {
+                transfer(view::update)
+            } finally {
+                ticker?.cancel()
+                view.finish()
+            }
+        }
     }
 }
 
@@ -84,7 +90,7 @@ internal class MissionUpload(out: Output) : MissionAction(out, "upload") {
     }
 
     override suspend fun act(vehicle: MavlinkVehicle) {
-        vehicle.mission.upload(items, type, progress("uploading"))
+        withProgress("uploading") { vehicle.mission.upload(items, type, it) }
         val list = type.name.lowercase()
         finish(
             if (items.isEmpty()) "uploaded an empty $list list: cleared the $list list of vehicle ${vehicle.systemId}" else "uploaded ${items(items.size, type)} to vehicle ${vehicle.systemId}",
@@ -105,7 +111,7 @@ internal class MissionDownload(out: Output) : MissionAction(out, "download") {
     }
 
     override suspend fun act(vehicle: MavlinkVehicle) {
-        val items = vehicle.mission.download(type, progress("downloading"))
+        val items = withProgress("downloading") { vehicle.mission.download(type, it) }
         try {
             WplFile.write(Path.of(file), items)
         } catch (e: IOException) {

@@ -189,7 +189,6 @@ internal abstract class VehicleCommandBase(protected val out: Output, name: Stri
      * concerned: the list's [items], the [param] read or written.
      */
     protected fun finish(text: String, vehicle: MavlinkVehicle, action: String, items: Int? = null, param: Parameter? = null, requested: Double? = null) {
-        if (System.console() != null && !json) println()
         if (!json) return out.line(text)
         val t = vehicle.telemetry
         emit(

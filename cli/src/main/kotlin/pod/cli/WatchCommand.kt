@@ -40,7 +40,7 @@ internal class WatchCommand(private val out: Output) : CliktCommand(name = "watc
         try {
             val limit = duration
             if (limit == null) view.show(gcs) else withTimeoutOrNull(limit) { view.show(gcs) }
-            view.render(gcs)
+            view.finish(gcs)
         } finally {
             gcs.close()
         }
