@@ -86,7 +86,8 @@ internal abstract class VehicleCommandBase(protected val out: Output, name: Stri
                 awaiting.cancel()
             }
         } finally {
-            gcs.close()
+            // The next command may bind the same udpin port at once: release it before returning.
+            withContext(NonCancellable) { gcs.closeAndAwait() }
         }
     }
 
@@ -104,6 +105,8 @@ internal abstract class VehicleCommandBase(protected val out: Output, name: Stri
             while (true) {
                 delay(WAITING_EVERY)
                 val heard = heard()
+                // Once the vehicle asked for is heard, the pick is only giving others a moment.
+                if (if (wanted == null) heard.isNotEmpty() else wanted in heard) continue
                 val waited = started.elapsedNow().toReadable()
                 out.line(
                     if (json) {

@@ -6,7 +6,9 @@ import com.github.ajalt.clikt.parameters.options.convert
 import com.github.ajalt.clikt.parameters.options.default
 import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
+import kotlinx.coroutines.NonCancellable
 import kotlinx.coroutines.runBlocking
+import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeoutOrNull
 import pod.cli.json.Event
 import pod.cli.json.EventJson
@@ -42,7 +44,8 @@ internal class WatchCommand(private val out: Output) : CliktCommand(name = "watc
             if (limit == null) view.show(gcs) else withTimeoutOrNull(limit) { view.show(gcs) }
             view.finish(gcs)
         } finally {
-            gcs.close()
+            // The next command may bind the same udpin port at once: release it before returning.
+            withContext(NonCancellable) { gcs.closeAndAwait() }
         }
         gcs.linkError.value?.let { reportingLinkErrors { throw it } }
         Unit

@@ -6,20 +6,11 @@ import io.kotest.matchers.ints.shouldBeGreaterThan
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import io.kotest.matchers.string.shouldNotContain
-import java.util.concurrent.CopyOnWriteArrayList
-
-/** The lines a command printed, as the end-to-end tests capture them. */
-private class Captured : Output {
-    val lines = CopyOnWriteArrayList<String>()
-    override fun line(text: String) {
-        lines += text
-    }
-}
 
 class LiveViewTest : StringSpec({
 
     "away from a terminal the live view prints the table as plain lines and each event as a line" {
-        val out = Captured()
+        val out = RecordedLines()
         val view = LiveView(out, json = false)
         view.note("listening on /127.0.0.1:14550 (local port 14550)")
         view.draw(FLEET.filter { it.connected })
@@ -32,7 +23,7 @@ class LiveViewTest : StringSpec({
     }
 
     "with --json the view says nothing for people" {
-        val out = Captured()
+        val out = RecordedLines()
         val view = LiveView(out, json = true)
         view.note("listening")
         out.lines shouldBe emptyList()

@@ -6,21 +6,13 @@ import io.kotest.matchers.string.shouldContain
 import io.kotest.matchers.string.shouldNotContain
 import io.kotest.matchers.string.shouldStartWith
 import pod.mavlink.mission.TransferProgress
-import java.util.concurrent.CopyOnWriteArrayList
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TestTimeSource
-
-private class Lines : Output {
-    val lines = CopyOnWriteArrayList<String>()
-    override fun line(text: String) {
-        lines += text
-    }
-}
 
 class TransferProgressViewTest : StringSpec({
 
     "away from a terminal a transfer prints a line once its total is known and one per quarter, none before" {
-        val out = Lines()
+        val out = RecordedLines()
         val view = TransferProgressView(out, "downloading")
         // A download reports 0 of 0 until MISSION_COUNT tells it the total.
         repeat(3) { view.update(TransferProgress(0, 0)) }

@@ -20,6 +20,7 @@ import kotlinx.coroutines.flow.asStateFlow
 import kotlinx.coroutines.isActive
 import kotlinx.coroutines.job
 import kotlinx.coroutines.launch
+import kotlinx.coroutines.withTimeoutOrNull
 import pod.core.vehicle.ConnectionState
 import pod.core.vehicle.VehicleIdentity
 import pod.mavlink.codec.FrameEncoder
@@ -28,7 +29,9 @@ import pod.mavlink.codec.MessageCodec
 import pod.mavlink.link.LinkException
 import pod.mavlink.link.LinkPeer
 import pod.mavlink.link.MavlinkLink
+import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
 
 /**
  * One ground station on one link: it parses and routes every frame, sends our HEARTBEAT, finds
@@ -135,6 +138,15 @@ public class GroundStation private constructor(
     public fun close() {
         scope.cancel()
         link.close()
+    }
+
+    /**
+     * [close]s and suspends until the link's socket is released, at most [within]: its port can
+     * then be bound again at once, as by the next command on the same `udpin` port.
+     */
+    public suspend fun closeAndAwait(within: Duration = 2.seconds) {
+        close()
+        withTimeoutOrNull(within) { link.awaitClosed() }
     }
 
     private fun encode(message: Any): ByteArray =

@@ -33,8 +33,14 @@ public interface MavlinkLink {
         for (peer in peers) send(bytes, peer)
     }
 
-    /** Closes the socket; [receive] returns. */
+    /** Closes the socket; [receive] returns. The socket is released a moment later: see [awaitClosed]. */
     public fun close()
+
+    /**
+     * Suspends until the socket [close] closed is released, so that its port can be bound again at
+     * once (a command run right after another on the same `udpin` port).
+     */
+    public suspend fun awaitClosed() {}
 
     public companion object {
         /**

@@ -3,6 +3,7 @@ package pod.mavlink.link
 import io.ktor.network.sockets.InetSocketAddress
 import io.ktor.network.sockets.Socket
 import io.ktor.network.sockets.aSocket
+import io.ktor.network.sockets.awaitClosed
 import io.ktor.network.sockets.openReadChannel
 import io.ktor.network.sockets.openWriteChannel
 import io.ktor.utils.io.ByteWriteChannel
@@ -61,6 +62,11 @@ internal class TcpLink private constructor(
     override fun close() {
         closed = true
         socket.close()
+    }
+
+    // Ktor closes the channel on its selector after close() returns; the socket's job ends once it has.
+    override suspend fun awaitClosed() {
+        socket.awaitClosed()
     }
 
     companion object {

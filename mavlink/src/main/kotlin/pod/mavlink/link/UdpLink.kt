@@ -4,14 +4,17 @@ import io.ktor.network.sockets.BoundDatagramSocket
 import io.ktor.network.sockets.Datagram
 import io.ktor.network.sockets.InetSocketAddress
 import io.ktor.network.sockets.aSocket
+import io.ktor.network.sockets.awaitClosed
 import io.ktor.utils.io.core.buildPacket
 import io.ktor.utils.io.core.writeFully
 import kotlinx.coroutines.channels.ClosedReceiveChannelException
 import kotlinx.coroutines.channels.ClosedSendChannelException
+import kotlinx.coroutines.delay
 import kotlinx.io.readByteArray
 import java.net.BindException
 import java.net.SocketException
 import java.util.concurrent.ConcurrentHashMap
+import kotlin.time.Duration.Companion.milliseconds
 
 /**
  * UDP over a Ktor datagram socket. Listening ([LinkAddress.UdpIn]) it learns a peer from every
@@ -60,9 +63,30 @@ internal class UdpLink private constructor(
         socket.close()
     }
 
+    override suspend fun awaitClosed() {
+        socket.awaitClosed()
+        // Java NIO keeps a closed channel's socket open while it is still registered with a selector
+        // (it is released when the selector next deregisters it, on Ktor's selector thread): a
+        // listening link waits until its port can be bound again. An ephemeral port nobody asks for.
+        val listening = address as? LinkAddress.UdpIn ?: return
+        if (listening.port == 0) return
+        val port = java.net.InetSocketAddress(listening.host, localPort)
+        while (true) {
+            try {
+                java.net.DatagramSocket(port).close()
+                return
+            } catch (_: SocketException) {
+                delay(RELEASE_POLL)
+            }
+        }
+    }
+
     companion object {
         /** Big enough for a burst from dozens of vehicles; Linux caps it at net.core.rmem_max. */
         const val RECEIVE_BUFFER_BYTES = 4 shl 20
+
+        /** How often [awaitClosed] looks whether the port is free again. */
+        private val RELEASE_POLL = 5.milliseconds
 
         suspend fun open(address: LinkAddress): UdpLink {
             val remote = if (address is LinkAddress.UdpOut) {
