@@ -201,14 +201,6 @@ class BadInputSpec : StringSpec({
         }
     }
 
-    "a script that does not compile is bad input: exit 2 and the compiler's file:line, no stack trace" {
-        val script = dir.file("broken.main.kts", "val x: Int = \"not a number\"\n")
-        val ran = pod("run", script, within = 120.seconds)
-        ran.code shouldBe 2
-        ran.text shouldNotContain "\tat "
-        ran.err.joinToString("\n") shouldContain "broken.main.kts:1"
-    }
-
     "with --json a bad input is also an error event on stdout, the only line there" {
         val ran = pod("param", "set", "THIS_NAME_IS_WAY_TOO_LONG_FOR_MAVLINK", "1", "--json", *link())
         ran.code shouldBe 2

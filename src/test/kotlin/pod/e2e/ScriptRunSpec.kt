@@ -71,9 +71,9 @@ class ScriptRunSpec : StringSpec({
         cache.listFiles()!!.filter { it.name.endsWith(".jar") } shouldHaveSize 1
     }
 
-    "a syntax error is reported at its file and line, with exit code 1 and no stack trace" {
+    "a syntax error is reported at its file and line, with exit code 2 (bad input) and no stack trace" {
         val run = pod("run", script("syntax-error.main.kts"))
-        run.exitCode shouldBe 1
+        run.exitCode shouldBe 2
         run.out shouldBe emptyList()
         run.err shouldContain "syntax-error.main.kts:4:"
         run.err shouldContain "error:"
