@@ -213,7 +213,10 @@ internal class Commands(private val ap: SimAutopilot) {
             val amsl = cmd.z.takeIf { it.isFinite() }?.toDouble() ?: ap.takeoffAltitude(null)
             if (!ap.flying && !ap.positionReady) return TEMPORARILY_REJECTED.also { refuse("Takeoff denied! Please disarm and retry") }
             ap.setMode("AUTO.TAKEOFF")
-            if (ap.activity is Activity.Takeoff) ap.activity = Activity.Takeoff(maxOf(amsl, ap.ground + 1.0), "AUTO.LOITER")
+            // Every NAV_TAKEOFF sets Navigator's takeoff setpoint to its altitude (PX4
+            // navigator_main.cpp, VEHICLE_CMD_NAV_TAKEOFF -> get_takeoff_triplet()), a resend after a
+            // lost ack too: re-entering AUTO.TAKEOFF above MIS_TAKEOFF_ALT must not end the climb.
+            if (ap.activity is Activity.Takeoff || ap.flying) ap.activity = Activity.Takeoff(maxOf(amsl, ap.ground + 1.0), "AUTO.LOITER")
             return ACCEPTED
         }
         if (cmd.isInt && cmd.frame != FRAME_GLOBAL_RELATIVE_ALT) return DENIED

@@ -147,6 +147,19 @@ class CommandTest : StringSpec({
         px4.body.location.altitude.meters - HOME.altitude.meters shouldBe (2.5 plusOrMinus 0.3) // MIS_TAKEOFF_ALT
     }
 
+    "PX4: a NAV_TAKEOFF resent while climbing (its ack was lost) keeps climbing to the altitude asked, not to MIS_TAKEOFF_ALT" {
+        val px4 = autopilot(Autopilot.PX4)
+        px4.run(2.5)
+        px4.armCommand() shouldBe MavResult.ACCEPTED
+        val target = (HOME.altitude.meters + 10.0).toFloat()
+        px4.command(CommandRequest(22, z = target)) shouldBe MavResult.ACCEPTED
+        px4.runUntil(30.0) { it.body.location.altitude.meters - HOME.altitude.meters >= 2.0 }
+        // The resend finds the vehicle above MIS_TAKEOFF_ALT's 2.5 m - 1: it must not stop there.
+        px4.command(CommandRequest(22, z = target)) shouldBe MavResult.ACCEPTED
+        px4.runUntil(30.0) { it.modeName == "AUTO.LOITER" }
+        px4.body.location.altitude.meters - HOME.altitude.meters shouldBe (10.0 plusOrMinus 0.5)
+    }
+
     "ArduCopter takes off in GUIDED, refuses a disarm in the air, lands in LAND and disarms on the ground" {
         val ap = autopilot()
         ap.run(2.5)
