@@ -1,6 +1,7 @@
 package pod.mavlink
 
 import kotlin.time.Duration
+import kotlin.time.TimeSource
 import kotlin.time.Duration.Companion.seconds
 
 /**
@@ -39,6 +40,11 @@ public data class GroundStationConfig(
      * spoofed addresses cannot grow memory without limit.
      */
     public val maxPeers: Int = 1024,
+    /**
+     * The clock every time reading of the station and its vehicles' protocols goes through
+     * (heartbeat silence, exchange and readiness deadlines); a test can pass a virtual one.
+     */
+    public val clock: TimeSource = TimeSource.Monotonic,
 ) {
     init {
         require(systemId in 1..255) { "systemId must be in 1..255, was $systemId" }

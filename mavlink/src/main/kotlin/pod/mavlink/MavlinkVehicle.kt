@@ -51,12 +51,15 @@ public class MavlinkVehicle internal constructor(
     )
     private val gaps = SequenceGaps()
     private val texts = StatusTextJoiner()
-    private val textClock = TimeSource.Monotonic.markNow()
+    /** The station's clock ([GroundStationConfig.clock]): every time reading about this vehicle. */
+    internal val clock: TimeSource get() = station.config.clock
+
+    private val textClock = clock.markNow()
 
     /** Message ids heard from the autopilot since the station last asked for streams (see [StreamRequests]). */
     internal val heardMessages: MutableSet<Int> = java.util.concurrent.ConcurrentHashMap.newKeySet()
 
-    @Volatile internal var lastHeartbeat: TimeMark = TimeSource.Monotonic.markNow()
+    @Volatile internal var lastHeartbeat: TimeMark = clock.markNow()
     @Volatile internal var peer: LinkPeer? = null
 
     /** MAVLink system id, 1..255. */
@@ -111,7 +114,7 @@ public class MavlinkVehicle internal constructor(
         gaps.record(frame.componentId, frame.sequence)
         telemetry.onLinkQuality(LinkQuality(gaps.received, gaps.lost))
         if (message is Heartbeat && frame.componentId == _identity.value.componentId) {
-            lastHeartbeat = TimeSource.Monotonic.markNow()
+            lastHeartbeat = clock.markNow()
             val id = _identity.value
             val updated = id.copy(
                 type = MavlinkEnums.vehicleType(message.type().value()),

@@ -11,7 +11,6 @@ import pod.core.vehicle.ConnectionState
 import pod.core.vehicle.VehicleLost
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
-import kotlin.time.TimeSource
 
 /**
  * Runs one protocol exchange with this vehicle: [block] reads the messages [pick] keeps from
@@ -58,7 +57,7 @@ internal suspend fun <T, R> MavlinkVehicle.exchange(
  * that resends on its attempt timeout refreshes it as it goes.
  */
 internal class ExchangeWatch(private val vehicle: MavlinkVehicle, private val what: String, private val giveUpAfter: Duration?) {
-    @Volatile private var since = TimeSource.Monotonic.markNow()
+    @Volatile private var since = vehicle.clock.markNow()
     @Volatile private var sends = 0
     @Volatile private var shown: Awaiting? = null
 
@@ -75,7 +74,7 @@ internal class ExchangeWatch(private val vehicle: MavlinkVehicle, private val wh
 
     /** The vehicle answered this exchange. */
     fun answered() {
-        since = TimeSource.Monotonic.markNow()
+        since = vehicle.clock.markNow()
         sends = 0
         clear()
     }

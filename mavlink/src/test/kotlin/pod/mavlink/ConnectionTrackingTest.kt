@@ -10,6 +10,7 @@ import io.kotest.matchers.comparables.shouldBeGreaterThan
 import io.kotest.matchers.comparables.shouldBeLessThanOrEqualTo
 import io.kotest.matchers.shouldBe
 import io.ktor.network.sockets.InetSocketAddress
+import kotlin.time.Duration.Companion.hours
 import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.awaitCancellation
@@ -99,5 +100,24 @@ class ConnectionTrackingTest : StringSpec({
         }
         decoders.size shouldBe 4
         decoders.totals().evictions shouldBe 46L
+    }
+
+    "silence is measured on the station's clock (GroundStationConfig.clock): a vehicle is lost when that clock says so" {
+        coroutineScope {
+            val clock = kotlin.time.TestTimeSource()
+            val link = ScriptedLink { deliver -> deliver(peer(1), heartbeat(0)) }
+            val config = GroundStationConfig(lostAfter = 1.hours, streamRates = emptyMap(), requestHome = false, clock = clock)
+            val gcs = GroundStation.open(link, this, config)
+            try {
+                val found = withTimeout(5.seconds) { gcs.vehicles.first { 1 in it } }.getValue(1)
+                found.connection.value shouldBe pod.core.vehicle.ConnectionState.CONNECTED
+                // An hour of this clock passes; on the wall clock, no time to speak of.
+                clock += 2.hours
+                withTimeout(5.seconds) { found.connection.first { it == pod.core.vehicle.ConnectionState.LOST } }
+                found.lastHeartbeat.elapsedNow() shouldBeGreaterThan 1.hours
+            } finally {
+                gcs.close()
+            }
+        }
     }
 })

@@ -6,7 +6,6 @@ import io.dronefleet.mavlink.util.EnumValue
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.minutes
 import kotlin.time.Duration.Companion.seconds
-import kotlin.time.TimeSource
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
@@ -83,7 +82,7 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
      * the autopilot's reason ([CommandRejected]).
      */
     public suspend fun arm(force: Boolean = false) {
-        val started = TimeSource.Monotonic.markNow()
+        val started = vehicle.clock.markNow()
         try {
             while (true) {
                 try {

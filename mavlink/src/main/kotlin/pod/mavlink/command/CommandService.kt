@@ -14,7 +14,6 @@ import java.util.concurrent.atomic.AtomicLong
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.nanoseconds
 import kotlin.time.Duration.Companion.seconds
-import kotlin.time.TimeSource
 
 /**
  * Sends commands to one vehicle and waits for their answers (COMMAND_LONG / COMMAND_INT and
@@ -54,7 +53,7 @@ public class CommandService internal constructor(
     }
 
     private suspend fun exchange(command: VehicleCommand, onProgress: (Int?) -> Unit): CommandReply {
-        val clock = TimeSource.Monotonic.markNow()
+        val clock = vehicle.clock.markNow()
         fun now() = clock.elapsedNow().inWholeNanoseconds
         val identity = vehicle.identity.value
         val ourSystem = vehicle.station.config.systemId

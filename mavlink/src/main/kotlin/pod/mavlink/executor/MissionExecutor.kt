@@ -2,7 +2,6 @@ package pod.mavlink.executor
 
 import java.util.concurrent.atomic.AtomicBoolean
 import kotlin.time.TimeMark
-import kotlin.time.TimeSource
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.CoroutineStart
 import kotlinx.coroutines.channels.Channel
@@ -209,7 +208,7 @@ public class MissionExecutor(
                 return
             }
             val outOfMission = seen?.mode != null && seen?.mode != missionMode && !tracker.allDone
-            leftMission = if (outOfMission) leftMission ?: TimeSource.Monotonic.markNow() else null
+            leftMission = if (outOfMission) leftMission ?: vehicle.clock.markNow() else null
         }
     }
 

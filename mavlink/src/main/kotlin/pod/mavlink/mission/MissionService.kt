@@ -20,7 +20,7 @@ import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.nanoseconds
 import kotlin.time.Duration.Companion.seconds
-import kotlin.time.TimeSource
+import kotlin.time.TimeMark
 
 /**
  * Mission, fence and rally lists of one vehicle: upload, download, clear, set the current item.
@@ -37,8 +37,8 @@ public class MissionService internal constructor(
 ) {
     private val exclusive = Mutex()
     @Volatile private var servesInOrder = false
-    private val appeared = TimeSource.Monotonic.markNow() // made with the vehicle, on its first heartbeat
-    private val cancelledUploads = java.util.concurrent.ConcurrentHashMap<MissionType, TimeSource.Monotonic.ValueTimeMark>()
+    private val appeared = vehicle.clock.markNow() // made with the vehicle, on its first heartbeat
+    private val cancelledUploads = java.util.concurrent.ConcurrentHashMap<MissionType, TimeMark>()
     private var roundTrip: RoundTripEstimator? = null
     private var roundTripTiming: TransferTiming? = null
 
@@ -99,7 +99,7 @@ public class MissionService internal constructor(
                     }
                 }
             } catch (e: CancellationException) {
-                cancelledUploads[type] = TimeSource.Monotonic.markNow()
+                cancelledUploads[type] = vehicle.clock.markNow()
                 throw e
             }
             if (outcome is TransferOutcome.AckMissing) {
@@ -206,7 +206,7 @@ public class MissionService internal constructor(
         onTimeout: (Long) -> MissionStep<T>,
         afterEachStep: () -> Unit,
     ): TransferOutcome<T> {
-        val clock = TimeSource.Monotonic.markNow()
+        val clock = vehicle.clock.markNow()
         fun now() = clock.elapsedNow().inWholeNanoseconds
         val identity = vehicle.identity.value
         val ourSystem = vehicle.station.config.systemId

@@ -15,7 +15,6 @@ import pod.mavlink.exchange
 import pod.mavlink.command.CommandRoundTrip
 import pod.mavlink.command.CommandTiming
 import kotlin.time.Duration.Companion.nanoseconds
-import kotlin.time.TimeSource
 
 /**
  * Reads and writes one vehicle's parameters (PARAM_REQUEST_READ, PARAM_SET, answered by
@@ -74,7 +73,7 @@ public class ParamService internal constructor(
     }
 
     private suspend fun exchange(name: String, writing: Double?, type: ParamType?): Parameter {
-        val clock = TimeSource.Monotonic.markNow()
+        val clock = vehicle.clock.markNow()
         fun now() = clock.elapsedNow().inWholeNanoseconds
         val identity = vehicle.identity.value
         val encoding = encoding
