@@ -196,8 +196,10 @@ public class GroundStation private constructor(
                     this,
                 )
                 vehicle.peer = peer
-                _vehicles.value = _vehicles.value + (frame.systemId to vehicle)
+                // Its first heartbeat is applied before anyone can see the vehicle: a caller that
+                // picks it from [vehicles] at once reads its armed state and mode, not defaults.
                 vehicle.onFrame(frame, message)
+                _vehicles.value = _vehicles.value + (frame.systemId to vehicle)
                 _events.tryEmit(FleetEvent.Found(vehicle))
                 streamRequests.restart(vehicle)
                 return

@@ -13,6 +13,7 @@ import io.ktor.network.sockets.InetSocketAddress
 import kotlin.time.Duration.Companion.hours
 import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.CompletableDeferred
+import kotlinx.coroutines.async
 import kotlinx.coroutines.awaitCancellation
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.filterIsInstance
@@ -117,6 +118,33 @@ class ConnectionTrackingTest : StringSpec({
                 found.lastHeartbeat.elapsedNow() shouldBeGreaterThan 1.hours
             } finally {
                 gcs.close()
+            }
+        }
+    }
+
+    "a vehicle is published with its first heartbeat applied: whoever sees it in vehicles reads it armed, never a default" {
+        val armed = encoder.encode(
+            Heartbeat.builder().type(MavType.MAV_TYPE_QUADROTOR).autopilot(MavAutopilot.MAV_AUTOPILOT_ARDUPILOTMEGA)
+                .baseMode(EnumValue.create(128)).customMode(4).systemStatus(MavState.MAV_STATE_ACTIVE).mavlinkVersion(3).build(),
+            1, 1, 0,
+        )
+        repeat(50) {
+            coroutineScope {
+                val go = CompletableDeferred<Unit>()
+                val link = ScriptedLink { deliver -> go.await(); deliver(peer(1), armed) }
+                val gcs = GroundStation.open(link, this, GroundStationConfig(streamRates = emptyMap(), requestHome = false))
+                try {
+                    // Another thread looks at the fleet as closely as it can, as a command picking its vehicle does.
+                    val seen = async(kotlinx.coroutines.Dispatchers.Default) {
+                        var vehicles = gcs.vehicles.value
+                        go.complete(Unit)
+                        while (1 !in vehicles) vehicles = gcs.vehicles.value
+                        vehicles.getValue(1).telemetry.armed.value
+                    }
+                    withTimeout(5.seconds) { seen.await() } shouldBe true
+                } finally {
+                    gcs.close()
+                }
             }
         }
     }
