@@ -5,7 +5,7 @@
 //
 // `pod run` puts Pod on the classpath; run with plain `kotlin` after `./mvnw install`, the
 // DependsOn line below finds it in ~/.m2 (and then it flies 4 simulated drones in real time).
-@file:DependsOn("pod:pod-cli:0.1.0-SNAPSHOT")
+@file:DependsOn("pod:pod-launch:0.1.0-SNAPSHOT")
 
 import pod.core.units.m
 import pod.dsl.mission

@@ -32,7 +32,7 @@ import pod.samples.listing1
 import pod.samples.listing2
 import pod.samples.listing3
 import pod.samples.listing4
-import pod.samples.simulate
+import pod.launch.simulate
 import pod.sim.SimFlavor
 import kotlin.math.abs
 import kotlin.time.Duration

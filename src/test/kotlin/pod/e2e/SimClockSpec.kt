@@ -10,7 +10,7 @@ import pod.core.units.m
 import pod.dsl.mission
 import pod.dsl.on
 import pod.dsl.pick
-import pod.samples.simulate
+import pod.launch.simulate
 import pod.sim.SimFlavor
 import pod.sim.SimPlatform
 import java.util.concurrent.ConcurrentHashMap

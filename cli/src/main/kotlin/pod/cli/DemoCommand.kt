@@ -19,7 +19,7 @@ import pod.cli.json.toEvent
 import pod.launch.Interruption
 import pod.launch.Interrupted
 import pod.samples.listing4
-import pod.samples.simulate
+import pod.launch.simulate
 import pod.sim.SimFlavor
 import kotlin.io.path.Path
 import kotlin.time.Duration

@@ -1,4 +1,4 @@
-package pod.samples
+package pod.launch
 
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.shouldBe

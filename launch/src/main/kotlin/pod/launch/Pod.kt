@@ -7,8 +7,6 @@ import pod.core.engine.EngineEvent
 import pod.core.engine.Program
 import pod.mavlink.GroundStation
 import pod.mavlink.platform.MavlinkPlatform
-import pod.samples.runShowing
-import pod.samples.simulate
 import pod.sim.SimFlavor
 
 /**
@@ -31,7 +29,7 @@ import pod.sim.SimFlavor
  * }
  * ```
  */
-fun <T> pod(choice: FleetChoice = FleetChoice.fromSystemProperties(), print: (String) -> Unit = ::println, block: suspend Program.() -> T): T =
+public fun <T> pod(choice: FleetChoice = FleetChoice.fromSystemProperties(), print: (String) -> Unit = ::println, block: suspend Program.() -> T): T =
     runBlocking {
         val madeSafe = SafeReport()
         try {

@@ -14,12 +14,17 @@ package pod.launch
  * | `pod.fleet` | `sim:N` (1..254 vehicles) or `connect:ADDRESS` (a connection string as `pod watch` takes) | `sim:4` |
  * | `pod.timeScale` | simulated seconds per real second, 0.01..1000; only with `sim:N` | `1` |
  */
-sealed interface FleetChoice {
+public sealed interface FleetChoice {
     /** The same choice as system properties, as `pod run` sets them. */
-    fun toSystemProperties(): Map<String, String>
+    public fun toSystemProperties(): Map<String, String>
 
     /** [count] simulated vehicles on loopback, their clocks running [timeScale] times real time. */
-    data class Sim(val count: Int = 4, val timeScale: Double = 1.0) : FleetChoice {
+    public data class Sim(
+        /** How many vehicles, 1..254. */
+        public val count: Int = 4,
+        /** Simulated seconds per real second, 0.01..1000. */
+        public val timeScale: Double = 1.0,
+    ) : FleetChoice {
         init {
             require(count in 1..254) { "count must be in 1..254, was $count" }
             require(timeScale in 0.01..1000.0) { "timeScale must be in 0.01..1000, was $timeScale" }
@@ -30,7 +35,10 @@ sealed interface FleetChoice {
     }
 
     /** Real (or externally simulated) vehicles reached through [address], e.g. `udpin://0.0.0.0:14550`. */
-    data class Connect(val address: String) : FleetChoice {
+    public data class Connect(
+        /** The connection string, e.g. `udpin://0.0.0.0:14550`. */
+        public val address: String,
+    ) : FleetChoice {
         init {
             require(address.isNotBlank()) { "address must not be blank" }
         }
@@ -38,28 +46,28 @@ sealed interface FleetChoice {
         override fun toSystemProperties(): Map<String, String> = mapOf(FLEET_PROPERTY to "connect:$address")
     }
 
-    companion object {
+    public companion object {
         /** `sim:N` or `connect:ADDRESS`. */
-        const val FLEET_PROPERTY: String = "pod.fleet"
+        public const val FLEET_PROPERTY: String = "pod.fleet"
 
         /** Simulated seconds per real second for `sim:N`. */
-        const val TIME_SCALE_PROPERTY: String = "pod.timeScale"
+        public const val TIME_SCALE_PROPERTY: String = "pod.timeScale"
 
         /** What a program gets when nothing chose a fleet. */
-        val DEFAULT: FleetChoice = Sim(4)
+        public val DEFAULT: FleetChoice = Sim(4)
 
         /**
          * The choice in this JVM's system properties, or [DEFAULT] when there is none.
          * @throws IllegalArgumentException naming the property when a value is malformed.
          */
-        fun fromSystemProperties(): FleetChoice =
+        public fun fromSystemProperties(): FleetChoice =
             parse(System.getProperty(FLEET_PROPERTY), System.getProperty(TIME_SCALE_PROPERTY))
 
         /**
          * The choice that property values [fleet] and [timeScale] describe (null: not set).
          * @throws IllegalArgumentException naming the property when a value is malformed.
          */
-        fun parse(fleet: String?, timeScale: String?): FleetChoice {
+        public fun parse(fleet: String?, timeScale: String?): FleetChoice {
             val scale = timeScale?.let {
                 it.trim().toDoubleOrNull()?.takeIf { s -> s in 0.01..1000.0 }
                     ?: throw IllegalArgumentException("$TIME_SCALE_PROPERTY must be a number in 0.01..1000, was '$it'")

@@ -1,4 +1,4 @@
-package pod.samples.map
+package pod.launch.map
 
 import pod.core.mission.Mission
 import pod.core.mission.MissionStep
@@ -11,24 +11,24 @@ import kotlin.math.max
  * north up, with a 100 m scale bar. Coordinates are projected flat around the first point, which
  * is exact enough over the few kilometres a demo flies.
  */
-class SvgMap(private val width: Int = 900, private val height: Int = 700) {
+internal class SvgMap(private val width: Int = 900, private val height: Int = 700) {
     private class Line(val label: String, val points: List<Location>, val colour: String, val planned: Boolean)
 
     private val lines = mutableListOf<Line>()
 
     /** Adds [mission]'s path as planned for vehicle [vehicleId]. */
-    fun planned(vehicleId: Int, mission: Mission) {
+    internal fun planned(vehicleId: Int, mission: Mission) {
         val points = mission.steps.filterIsInstance<MissionStep.Navigation>().map { it.location }
         if (points.isNotEmpty()) lines += Line(mission.name, points, colour(vehicleId), planned = true)
     }
 
     /** Adds a flown track of vehicle [vehicleId]. */
-    fun flown(vehicleId: Int, name: String, points: List<Location>) {
+    internal fun flown(vehicleId: Int, name: String, points: List<Location>) {
         if (points.size >= 2) lines += Line(name, points, colour(vehicleId), planned = false)
     }
 
     /** The SVG document. */
-    fun render(title: String): String {
+    internal fun render(title: String): String {
         val all = lines.flatMap { it.points }
         val origin = all.firstOrNull() ?: Location(0.0, 0.0)
         val xy = all.map { project(origin, it) }

@@ -1,4 +1,4 @@
-package pod.samples
+package pod.launch
 
 import kotlinx.coroutines.coroutineScope
 import pod.core.engine.Engine
@@ -6,21 +6,21 @@ import pod.core.engine.EngineConfig
 import pod.core.engine.EngineEvent
 import pod.core.engine.Program
 import pod.core.mission.Mission
-import pod.samples.map.SvgMap
-import pod.samples.map.Tracks
+import pod.launch.map.SvgMap
+import pod.launch.map.Tracks
 import pod.sim.SimFlavor
 import pod.sim.SimPlatform
 import java.nio.file.Path
 import kotlin.io.path.writeText
 
 /** What [simulate] saw: every engine event, the missions each vehicle flew, the tracks they flew. */
-class SimRecord(
+public class SimRecord(
     /** Every event, in order. */
-    val events: List<EngineEvent>,
+    public val events: List<EngineEvent>,
     /** (vehicle id, mission) for every flight started. */
-    val flights: List<Pair<Int, Mission>>,
+    public val flights: List<Pair<Int, Mission>>,
     /** Vehicle id → (name, flown points). */
-    val tracks: Map<Int, Pair<String, List<pod.core.units.Location>>>,
+    public val tracks: Map<Int, Pair<String, List<pod.core.units.Location>>>,
 )
 
 /**
@@ -29,7 +29,7 @@ class SimRecord(
  * given) and returns the program's result with a [SimRecord] of the run. The fleet is stopped
  * afterwards, however the program ends.
  */
-suspend fun <T> simulate(
+public suspend fun <T> simulate(
     flavors: List<SimFlavor>,
     timeScale: Double,
     onLine: (String) -> Unit = {},
@@ -66,7 +66,7 @@ private fun flightsOf(events: List<EngineEvent>): List<Pair<Int, Mission>> =
     synchronized(events) { events.filterIsInstance<EngineEvent.Flying>().map { it.vehicle to it.mission } }
 
 /** The SVG map of [flights] (planned, dashed) and [tracks] (flown, solid). */
-fun svg(flights: List<Pair<Int, Mission>>, tracks: Map<Int, Pair<String, List<pod.core.units.Location>>>, title: String): String {
+public fun svg(flights: List<Pair<Int, Mission>>, tracks: Map<Int, Pair<String, List<pod.core.units.Location>>>, title: String): String {
     val map = SvgMap()
     flights.distinctBy { it.first to it.second.name }.forEach { (id, mission) -> map.planned(id, mission) }
     tracks.forEach { (id, track) -> map.flown(id, track.first, track.second) }

@@ -1,4 +1,4 @@
-package pod.samples
+package pod.launch
 
 import kotlinx.coroutines.CoroutineStart
 import kotlinx.coroutines.coroutineScope
@@ -15,7 +15,7 @@ import kotlin.time.Duration.Companion.seconds
  * [EventLines], vehicle names from [names]) to [onLine] as it happens. Returns only once the
  * program's last event has been handed over, so callers see the whole run.
  */
-suspend fun <T> Engine.runShowing(
+public suspend fun <T> Engine.runShowing(
     names: (Int) -> String,
     onLine: (String) -> Unit = {},
     onEvent: (EngineEvent) -> Unit = {},

@@ -1,13 +1,13 @@
-package pod.samples
+package pod.launch
 
 import pod.core.engine.EngineEvent
 import pod.core.platform.MissionEvent
 import kotlin.time.Duration
 
 /** Engine events as one line each, for people: "  03:12  copter-2  step 4 of 19 done". */
-class EventLines(private val names: (Int) -> String) {
+public class EventLines(private val names: (Int) -> String) {
     /** The line for [event], or null for events too fine to print (task starts of plain composites). */
-    fun line(event: EngineEvent): String? {
+    public fun line(event: EngineEvent): String? {
         val text = when (event) {
             is EngineEvent.TaskStarted -> if (event.label.startsWith("slot") || event.label.contains(" on [")) "start  ${event.label}" else null
             is EngineEvent.TaskCompleted -> if (event.label.contains(" on [")) "done   ${event.label}" else null
@@ -31,12 +31,12 @@ class EventLines(private val names: (Int) -> String) {
         MissionEvent.Completed -> "$name mission complete"
     }
 
-    companion object {
+    public companion object {
         /** "1 step", "4 steps". */
-        fun steps(count: Int): String = if (count == 1) "1 step" else "$count steps"
+        public fun steps(count: Int): String = if (count == 1) "1 step" else "$count steps"
 
         /** mm:ss of vehicle time. */
-        fun clock(at: Duration): String {
+        public fun clock(at: Duration): String {
             val s = at.inWholeSeconds
             return "%02d:%02d".format(s / 60, s % 60)
         }

@@ -1,4 +1,4 @@
-package pod.samples.map
+package pod.launch.map
 
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Job
@@ -10,12 +10,12 @@ import pod.core.units.Location
 import java.util.concurrent.ConcurrentHashMap
 
 /** Records where each vehicle of a platform flies: a point whenever it has moved [step] metres. */
-class Tracks(private val step: Double = 2.0) {
+internal class Tracks(private val step: Double = 2.0) {
     private val points = ConcurrentHashMap<Int, MutableList<Location>>()
     private val names = ConcurrentHashMap<Int, String>()
 
     /** Starts recording every vehicle of [platform], present and future, in [scope]. */
-    fun record(platform: Platform, scope: CoroutineScope): Job = scope.launch {
+    internal fun record(platform: Platform, scope: CoroutineScope): Job = scope.launch {
         val started = mutableSetOf<Int>()
         platform.vehicles.collect { list -> list.filter { started.add(it.id) }.forEach { follow(it, this) } }
     }
@@ -33,6 +33,6 @@ class Tracks(private val step: Double = 2.0) {
     }
 
     /** Vehicle id → (name, points so far). */
-    fun snapshot(): Map<Int, Pair<String, List<Location>>> =
+    internal fun snapshot(): Map<Int, Pair<String, List<Location>>> =
         points.mapValues { (id, track) -> (names[id] ?: "vehicle $id") to synchronized(track) { track.toList() } }
 }

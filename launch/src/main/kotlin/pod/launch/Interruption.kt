@@ -13,7 +13,8 @@ import kotlin.coroutines.cancellation.CancellationException
 import kotlin.system.exitProcess
 
 /**
- * Ctrl-C (SIGINT) and SIGTERM for Pod's command line.
+ * Ctrl-C (SIGINT) and SIGTERM for Pod's command line, and for any app that wants a signal to make
+ * its vehicles safe before the process ends.
  *
  * Left to the JVM, either signal ends the process at once and a vehicle flying a mission flies on.
  * Once [install]ed, the first signal cancels the work running inside [cancellable] (a program, a
@@ -25,9 +26,9 @@ import kotlin.system.exitProcess
  * Without [install] (commands run in-process by tests, scripts run by other hosts) [cancellable]
  * only runs its block.
  */
-internal object Interruption {
+public object Interruption {
     /** The exit code of a process stopped by a signal: 128 + SIGINT's number, as shells report it. */
-    const val EXIT_CODE: Int = 130
+    public const val EXIT_CODE: Int = 130
 
     private val running: MutableSet<Job> = ConcurrentHashMap.newKeySet()
     private val signals = AtomicInteger()
@@ -35,14 +36,14 @@ internal object Interruption {
 
     /** The signal that stopped this process ("SIGINT", "SIGTERM"), or null while none came. */
     @Volatile
-    var signal: String? = null
+    public var signal: String? = null
         private set
 
     /**
      * Takes over SIGINT and SIGTERM from the JVM ([handleSignals] false: only sets [say], for
      * tests); [say] tells the person at the terminal what happens.
      */
-    fun install(say: (String) -> Unit, handleSignals: Boolean = true) {
+    public fun install(say: (String) -> Unit, handleSignals: Boolean = true) {
         this.say = say
         if (!handleSignals) return
         // sun.misc.Signal (jdk.unsupported) is the only way on JDK 17 to keep a signal from
@@ -75,7 +76,7 @@ internal object Interruption {
      * Runs [block] so that the first signal cancels it with [Interrupted]. Open the links and start
      * the vehicles' services outside [block]: they must still run while the caller makes safe.
      */
-    suspend fun <T> cancellable(block: suspend CoroutineScope.() -> T): T = coroutineScope {
+    public suspend fun <T> cancellable(block: suspend CoroutineScope.() -> T): T = coroutineScope {
         val job = coroutineContext.job
         running += job
         try {
@@ -96,11 +97,14 @@ internal object Interruption {
 
 /** The work was cancelled because the process got [signal] (SIGINT or SIGTERM). */
 @OptIn(ExperimentalCoroutinesApi::class)
-internal class Interrupted(val signal: String) : CancellationException("interrupted by $signal"), CopyableThrowable<Interrupted> {
+public class Interrupted(
+    /** "SIGINT" or "SIGTERM". */
+    public val signal: String,
+) : CancellationException("interrupted by $signal"), CopyableThrowable<Interrupted> {
     // No copies for stack-trace recovery: a copy made from the message would lose [signal].
     override fun createCopy(): Interrupted? = null
 }
 
 /** The [Interrupted] among [error] and its causes, if any. */
-internal fun interruptionIn(error: Throwable?): Interrupted? =
+public fun interruptionIn(error: Throwable?): Interrupted? =
     generateSequence(error) { it.cause }.take(10).filterIsInstance<Interrupted>().firstOrNull()

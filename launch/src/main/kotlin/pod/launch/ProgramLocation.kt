@@ -21,15 +21,18 @@ import kotlin.coroutines.resume
  * suspended at, which Kotlin's debug metadata keeps in the program's continuation, is the line a
  * person wants to see.
  */
-internal class ProgramLocation(val frame: StackTraceElement) :
+public class ProgramLocation(
+    /** The program's frame: its file and the line it was suspended at. */
+    public val frame: StackTraceElement,
+) :
     Throwable("the program was at ${frame.fileName}:${frame.lineNumber}", null, false, true) {
     init {
         stackTrace = arrayOf(frame)
     }
 
-    companion object {
-        /** The location attached to [error] by [runLocating], if any. */
-        fun of(error: Throwable): StackTraceElement? = error.suppressed.firstNotNullOfOrNull { (it as? ProgramLocation)?.frame }
+    public companion object {
+        /** The location attached to [error] by a `pod { }` program's failure, if any. */
+        public fun of(error: Throwable): StackTraceElement? = error.suppressed.firstNotNullOfOrNull { (it as? ProgramLocation)?.frame }
     }
 }
 
