@@ -1,7 +1,8 @@
 package pod.mavlink
 
-import io.dronefleet.mavlink.common.CommandLong
-import io.dronefleet.mavlink.common.MavCmd
+import pod.mavlink.command.CommandWire
+import pod.mavlink.command.MavCommands
+import pod.mavlink.command.VehicleCommand
 import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Job
@@ -38,13 +39,16 @@ internal class StreamRequests(private val scope: CoroutineScope, private val con
 
     private suspend fun ask(vehicle: MavlinkVehicle) {
         vehicle.heardMessages.clear()
+        // Once: a vehicle with a camera answers with CAMERA_INFORMATION (see MavlinkVehicle.payloads),
+        // one without refuses the request, and nothing else depends on it.
+        if (config.requestPayloads && vehicle.payloads.value.isEmpty()) vehicle.send(command(vehicle, MavCommands.REQUEST_MESSAGE, MessageIds.CAMERA_INFORMATION.toFloat(), 0f))
         var round = 0
         while (scope.isActive && vehicle.connection.value == ConnectionState.CONNECTED) {
             val homeMissing = config.requestHome && vehicle.telemetry.home.value == null
-            if (homeMissing) vehicle.send(command(vehicle, MavCmd.MAV_CMD_REQUEST_MESSAGE, HOME_POSITION.toFloat(), 0f))
+            if (homeMissing) vehicle.send(command(vehicle, MavCommands.REQUEST_MESSAGE, MessageIds.HOME_POSITION.toFloat(), 0f))
             val unheard = if (round < config.streamRequestRounds) config.streamRates.filterKeys { it !in vehicle.heardMessages } else emptyMap()
             for ((messageId, hz) in unheard) {
-                vehicle.send(command(vehicle, MavCmd.MAV_CMD_SET_MESSAGE_INTERVAL, messageId.toFloat(), (1_000_000.0 / hz).toFloat()))
+                vehicle.send(command(vehicle, MavCommands.SET_MESSAGE_INTERVAL, messageId.toFloat(), (1_000_000.0 / hz).toFloat()))
             }
             round++
             if (!homeMissing && unheard.isEmpty()) return
@@ -52,19 +56,8 @@ internal class StreamRequests(private val scope: CoroutineScope, private val con
         }
     }
 
-    private fun command(vehicle: MavlinkVehicle, command: MavCmd, param1: Float, param2: Float): CommandLong {
+    private fun command(vehicle: MavlinkVehicle, command: Int, param1: Float, param2: Float): Any {
         val id = vehicle.identity.value
-        return CommandLong.builder()
-            .targetSystem(id.systemId)
-            .targetComponent(id.componentId)
-            .command(command)
-            .param1(param1)
-            .param2(param2)
-            .build()
-    }
-
-    internal companion object {
-        /** HOME_POSITION's message id. */
-        const val HOME_POSITION = 242
+        return CommandWire.encode(VehicleCommand(command, param1 = param1, param2 = param2), id.systemId, id.componentId)
     }
 }
