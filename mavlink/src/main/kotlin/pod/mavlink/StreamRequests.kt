@@ -39,19 +39,20 @@ internal class StreamRequests(private val scope: CoroutineScope, private val con
 
     private suspend fun ask(vehicle: MavlinkVehicle) {
         vehicle.heardMessages.clear()
-        // Once: a vehicle with a camera answers with CAMERA_INFORMATION (see MavlinkVehicle.payloads),
-        // one without refuses the request, and nothing else depends on it.
-        if (config.requestPayloads && vehicle.payloads.value.isEmpty()) vehicle.send(command(vehicle, MavCommands.REQUEST_MESSAGE, MessageIds.CAMERA_INFORMATION.toFloat(), 0f))
         var round = 0
         while (scope.isActive && vehicle.connection.value == ConnectionState.CONNECTED) {
             val homeMissing = config.requestHome && vehicle.telemetry.home.value == null
             if (homeMissing) vehicle.send(command(vehicle, MavCommands.REQUEST_MESSAGE, MessageIds.HOME_POSITION.toFloat(), 0f))
+            // A vehicle with a camera answers with CAMERA_INFORMATION (see MavlinkVehicle.payloads), one
+            // without refuses; asked each round like a stream, since either may be lost, and never waited for.
+            val askPayloads = config.requestPayloads && round < config.streamRequestRounds && vehicle.payloads.value.isEmpty()
+            if (askPayloads) vehicle.send(command(vehicle, MavCommands.REQUEST_MESSAGE, MessageIds.CAMERA_INFORMATION.toFloat(), 0f))
             val unheard = if (round < config.streamRequestRounds) config.streamRates.filterKeys { it !in vehicle.heardMessages } else emptyMap()
             for ((messageId, hz) in unheard) {
                 vehicle.send(command(vehicle, MavCommands.SET_MESSAGE_INTERVAL, messageId.toFloat(), (1_000_000.0 / hz).toFloat()))
             }
             round++
-            if (!homeMissing && unheard.isEmpty()) return
+            if (!homeMissing && unheard.isEmpty() && !askPayloads) return
             delay(config.streamRequestInterval)
         }
     }

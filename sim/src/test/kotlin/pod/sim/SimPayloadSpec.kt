@@ -40,8 +40,8 @@ class SimPayloadSpec : StringSpec({
 
                 val platform = MavlinkPlatform(gcs)
                 val offered = withTimeout(10.seconds) { platform.vehicles.first { it.size == 2 } }.associateBy { it.id }
-                offered.getValue(7).payloads shouldBe setOf("camera")
-                offered.getValue(8).payloads.shouldBeEmpty()
+                offered.getValue(7).payloads.value shouldBe setOf("camera")
+                offered.getValue(8).payloads.value.shouldBeEmpty()
             } finally {
                 withCamera.stop()
                 without.stop()

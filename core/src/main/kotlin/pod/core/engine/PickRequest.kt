@@ -38,7 +38,7 @@ public data class PickRequest(
     public fun accepts(vehicle: PlatformVehicle, scope: ConditionScope): Boolean {
         if (types.isNotEmpty() && vehicle.type !in types) return false
         if (ids.isNotEmpty() && vehicle.id !in ids) return false
-        if (!vehicle.payloads.containsAll(payloads)) return false
+        if (payloads.isNotEmpty() && !scope.read(vehicle.payloads).containsAll(payloads)) return false
         if (scope.read(vehicle.connection) != ConnectionState.CONNECTED) return false
         // A vehicle whose charge is unknown (NaN) does not meet a battery requirement until it reports one.
         if (minBattery != null && !(scope.battery(vehicle) >= minBattery)) return false

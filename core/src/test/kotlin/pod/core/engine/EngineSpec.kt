@@ -169,6 +169,21 @@ class EngineSpec : FunSpec({
         }
     }
 
+    test("a pick for a payload waits until a vehicle reports carrying it") {
+        runTest {
+            val fleet = FakeFleet(1)
+            val v = fleet[1]
+            v.payloads.value = emptySet()
+            engine(fleet).run {
+                val picking = launch { pick(PickRequest(count = 1, payloads = setOf("camera"))).ids shouldBe setOf(1) }
+                testScheduler.advanceTimeBy(10.seconds)
+                picking.isActive shouldBe true
+                v.payloads.value = setOf("camera")
+                picking.join()
+            }
+        }
+    }
+
     test("an unknown battery is neither full nor empty: no low-battery condition fires and a battery pick waits until it is reported") {
         runTest {
             val fleet = FakeFleet(1)

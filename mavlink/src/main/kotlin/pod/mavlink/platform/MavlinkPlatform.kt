@@ -39,10 +39,11 @@ public class MavlinkPlatform(
     /** Time limits of every mission run. */
     public val timing: ExecutorTiming = ExecutorTiming(),
     /**
-     * What each vehicle carries, asked whenever a pick looks: by default what the vehicle has
-     * reported ([MavlinkVehicle.payloads]); an app that knows better (a gripper on vehicle 3) says so here.
+     * What each vehicle carries, when the app knows better than the vehicle says (a gripper on
+     * vehicle 3), asked once per vehicle; null (the default): what each vehicle reports
+     * ([MavlinkVehicle.payloads]), as it reports it.
      */
-    private val payloads: (MavlinkVehicle) -> Set<String> = REPORTED_PAYLOADS,
+    private val payloads: ((MavlinkVehicle) -> Set<String>)? = null,
 ) : Platform {
     private val adapters = HashMap<Int, MavlinkPlatformVehicle>()
     private val _vehicles = MutableStateFlow(adapt(usable(station.vehicles.value.values.map { it to lacking(it) })))
@@ -112,12 +113,8 @@ public class MavlinkPlatform(
 
     private fun adapt(heard: Map<Int, MavlinkVehicle>): List<PlatformVehicle> = synchronized(adapters) {
         heard.toSortedMap().map { (id, v) ->
-            adapters[id]?.takeIf { it.vehicle === v } ?: MavlinkPlatformVehicle(v, payloads).also { adapters[id] = it }
+            adapters[id]?.takeIf { it.vehicle === v } ?: MavlinkPlatformVehicle(v, payloads?.let { MutableStateFlow(it(v)).asStateFlow() } ?: v.payloads).also { adapters[id] = it }
         }
     }
 
-    public companion object {
-        /** The default payload function: what the vehicle itself has reported ([MavlinkVehicle.payloads]). */
-        public val REPORTED_PAYLOADS: (MavlinkVehicle) -> Set<String> = { it.payloads.value }
-    }
 }

@@ -14,11 +14,9 @@ import pod.mavlink.MavlinkVehicle
 public class MavlinkPlatformVehicle internal constructor(
     /** The MAVLink vehicle underneath. */
     public val vehicle: MavlinkVehicle,
-    private val payloadsOf: (MavlinkVehicle) -> Set<String>,
+    /** What it carries: what the vehicle reported ([MavlinkVehicle.payloads]) unless the platform was told. */
+    override val payloads: StateFlow<Set<String>>,
 ) : PlatformVehicle {
-    /** What the vehicle carries, read when asked: it can learn of a camera after it was first heard. */
-    override val payloads: Set<String> get() = payloadsOf(vehicle)
-
     override val id: Int get() = vehicle.systemId
     override val type: VehicleType get() = vehicle.identity.value.type
     override val name: String get() = "${kind(type)}-$id"
