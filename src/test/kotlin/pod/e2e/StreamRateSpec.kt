@@ -10,7 +10,7 @@ import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.withTimeout
 import pod.mavlink.GroundStation
 import pod.mavlink.GroundStationConfig
-import pod.sim.MessageIds
+import pod.mavlink.MessageIds
 import pod.sim.SimVehicle
 import pod.sim.SimVehicleConfig
 import kotlin.time.Duration.Companion.seconds
@@ -37,7 +37,7 @@ class StreamRateSpec : StringSpec({
 
     "an ArduCopter that is asked for nothing sends nothing but HEARTBEAT; the default station asks for what a mission needs, MISSION_CURRENT and the home included" {
         coroutineScope {
-            val silent = GroundStation.open("udpin://127.0.0.1:0", this, GroundStationConfig(streamRates = emptyMap(), requestHome = false))
+            val silent = GroundStation.open("udpin://127.0.0.1:0", this, GroundStationConfig(streamRates = emptyMap(), requestHome = false, requestPayloads = false))
             val asking = GroundStation.open("udpin://127.0.0.1:0", this)
             val quiet = SimVehicle(SimVehicleConfig(systemId = 7, gcs = "udpout://127.0.0.1:${silent.link.localPort}"))
             val asked = SimVehicle(SimVehicleConfig(systemId = 8, gcs = "udpout://127.0.0.1:${asking.link.localPort}"))

@@ -85,7 +85,7 @@ class PodReceiver private constructor(
         /** Opens a station that asks for no streams and never marks a vehicle lost during a run. */
         fun open(): PodReceiver {
             val scope = CoroutineScope(SupervisorJob() + Dispatchers.Default)
-            val config = GroundStationConfig(streamRates = emptyMap(), requestHome = false, lostAfter = 10.minutes)
+            val config = GroundStationConfig(streamRates = emptyMap(), requestHome = false, requestPayloads = false, lostAfter = 10.minutes)
             val station = runBlocking { GroundStation.open("udpin://127.0.0.1:0", scope, config) }
             return PodReceiver(scope, station)
         }

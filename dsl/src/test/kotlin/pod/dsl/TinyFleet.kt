@@ -21,7 +21,7 @@ import kotlin.time.Duration.Companion.seconds
 internal class TinyVehicle(override val id: Int) : PlatformVehicle {
     override val name = "tiny-$id"
     override val type = VehicleType.QUADROTOR
-    override val payloads = setOf("camera")
+    override val payloads = kotlinx.coroutines.flow.MutableStateFlow(setOf("camera"))
     override val connection: StateFlow<ConnectionState> = MutableStateFlow(ConnectionState.CONNECTED)
     override val position: StateFlow<Position?> = MutableStateFlow(null)
     override val battery = MutableStateFlow<Battery?>(Battery(1.0, 16.8))

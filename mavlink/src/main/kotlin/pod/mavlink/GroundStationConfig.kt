@@ -35,6 +35,11 @@ public data class GroundStationConfig(
      */
     public val requestHome: Boolean = true,
     /**
+     * Ask each vehicle found, once, for CAMERA_INFORMATION (MAV_CMD_REQUEST_MESSAGE): a vehicle
+     * with a camera answers and then carries "camera" ([MavlinkVehicle.payloads]).
+     */
+    public val requestPayloads: Boolean = true,
+    /**
      * Most source addresses the station keeps a frame decoder for; beyond it the one heard least
      * recently is dropped (counted in [LinkStats.evictedPeers]), so a flood of datagrams from
      * spoofed addresses cannot grow memory without limit.
@@ -66,13 +71,13 @@ public data class GroundStationConfig(
          * report of progress through items that ArduCopter never reports reached (a final NAV_LAND).
          */
         public val DEFAULT_STREAM_RATES: Map<Int, Double> = mapOf(
-            1 to 2.0, // SYS_STATUS
-            24 to 2.0, // GPS_RAW_INT
-            30 to 4.0, // ATTITUDE
-            33 to 4.0, // GLOBAL_POSITION_INT
-            42 to 2.0, // MISSION_CURRENT
-            242 to 0.2, // HOME_POSITION
-            245 to 2.0, // EXTENDED_SYS_STATE
+            MessageIds.SYS_STATUS to 2.0,
+            MessageIds.GPS_RAW_INT to 2.0,
+            MessageIds.ATTITUDE to 4.0,
+            MessageIds.GLOBAL_POSITION_INT to 4.0,
+            MessageIds.MISSION_CURRENT to 2.0,
+            MessageIds.HOME_POSITION to 0.2,
+            MessageIds.EXTENDED_SYS_STATE to 2.0,
         )
     }
 }

@@ -1,5 +1,6 @@
 package pod.mavlink
 
+import io.dronefleet.mavlink.common.CameraInformation
 import io.dronefleet.mavlink.common.Statustext
 import io.dronefleet.mavlink.minimal.Heartbeat
 import kotlinx.coroutines.channels.BufferOverflow
@@ -83,6 +84,18 @@ public class MavlinkVehicle internal constructor(
     /** Live telemetry. */
     public val telemetry: VehicleTelemetry = VehicleTelemetry()
 
+    private val _payloads = MutableStateFlow<Set<String>>(emptySet())
+
+    /**
+     * What the vehicle has shown it carries, as the MAVLink camera protocol tells: "camera" once a
+     * component of its system sends HEARTBEAT with MAV_TYPE_CAMERA, or CAMERA_INFORMATION arrives
+     * (ArduPilot 4.5+ answers MAV_CMD_REQUEST_MESSAGE for it from the autopilot when a camera is
+     * configured: ardupilot_wiki dev/source/docs/mavlink-camera.rst; a MAVLink camera component
+     * heartbeats on its own, mavlink.io services/camera.md). The station asks for it when the
+     * vehicle is found. Nothing is assumed: a vehicle that never says so carries nothing.
+     */
+    public val payloads: StateFlow<Set<String>> = _payloads.asStateFlow()
+
     /** Upload, download and clear its mission, fence and rally lists. */
     public val mission: pod.mavlink.mission.MissionService = pod.mavlink.mission.MissionService(this)
 
@@ -125,6 +138,9 @@ public class MavlinkVehicle internal constructor(
         } else if (message != null && frame.componentId == _identity.value.componentId) {
             telemetry.onMessage(message)
         }
+        if ((message is Heartbeat && message.type().value() == MAV_TYPE_CAMERA) || message is CameraInformation) {
+            if (CAMERA !in _payloads.value) _payloads.value = _payloads.value + CAMERA
+        }
         if (frame.componentId == _identity.value.componentId) heardMessages += frame.messageId
         if (message is Statustext) {
             val severity = Severity.entries.getOrElse(message.severity().value()) { Severity.DEBUG }
@@ -141,4 +157,12 @@ public class MavlinkVehicle internal constructor(
     }
 
     override fun toString(): String = "vehicle ${_identity.value.systemId}"
+
+    private companion object {
+        /** MAV_TYPE_CAMERA: the HEARTBEAT type of a camera component. */
+        const val MAV_TYPE_CAMERA = 30
+
+        /** The payload name a camera is offered under to `pick { payload("camera") }`. */
+        const val CAMERA = "camera"
+    }
 }

@@ -1,7 +1,8 @@
 package pod.mavlink
 
-import io.dronefleet.mavlink.common.CommandLong
-import io.dronefleet.mavlink.common.MavCmd
+import pod.mavlink.command.CommandWire
+import pod.mavlink.command.MavCommands
+import pod.mavlink.command.VehicleCommand
 import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Job
@@ -41,30 +42,23 @@ internal class StreamRequests(private val scope: CoroutineScope, private val con
         var round = 0
         while (scope.isActive && vehicle.connection.value == ConnectionState.CONNECTED) {
             val homeMissing = config.requestHome && vehicle.telemetry.home.value == null
-            if (homeMissing) vehicle.send(command(vehicle, MavCmd.MAV_CMD_REQUEST_MESSAGE, HOME_POSITION.toFloat(), 0f))
+            if (homeMissing) vehicle.send(command(vehicle, MavCommands.REQUEST_MESSAGE, MessageIds.HOME_POSITION.toFloat(), 0f))
+            // A vehicle with a camera answers with CAMERA_INFORMATION (see MavlinkVehicle.payloads), one
+            // without refuses; asked each round like a stream, since either may be lost, and never waited for.
+            val askPayloads = config.requestPayloads && round < config.streamRequestRounds && vehicle.payloads.value.isEmpty()
+            if (askPayloads) vehicle.send(command(vehicle, MavCommands.REQUEST_MESSAGE, MessageIds.CAMERA_INFORMATION.toFloat(), 0f))
             val unheard = if (round < config.streamRequestRounds) config.streamRates.filterKeys { it !in vehicle.heardMessages } else emptyMap()
             for ((messageId, hz) in unheard) {
-                vehicle.send(command(vehicle, MavCmd.MAV_CMD_SET_MESSAGE_INTERVAL, messageId.toFloat(), (1_000_000.0 / hz).toFloat()))
+                vehicle.send(command(vehicle, MavCommands.SET_MESSAGE_INTERVAL, messageId.toFloat(), (1_000_000.0 / hz).toFloat()))
             }
             round++
-            if (!homeMissing && unheard.isEmpty()) return
+            if (!homeMissing && unheard.isEmpty() && !askPayloads) return
             delay(config.streamRequestInterval)
         }
     }
 
-    private fun command(vehicle: MavlinkVehicle, command: MavCmd, param1: Float, param2: Float): CommandLong {
+    private fun command(vehicle: MavlinkVehicle, command: Int, param1: Float, param2: Float): Any {
         val id = vehicle.identity.value
-        return CommandLong.builder()
-            .targetSystem(id.systemId)
-            .targetComponent(id.componentId)
-            .command(command)
-            .param1(param1)
-            .param2(param2)
-            .build()
-    }
-
-    internal companion object {
-        /** HOME_POSITION's message id. */
-        const val HOME_POSITION = 242
+        return CommandWire.encode(VehicleCommand(command, param1 = param1, param2 = param2), id.systemId, id.componentId)
     }
 }

@@ -73,7 +73,7 @@ class ConnectionTrackingTest : StringSpec({
                 }
                 flooded.complete(Unit)
             }
-            val config = GroundStationConfig(lostAfter = 1.seconds, streamRates = emptyMap(), requestHome = false, maxPeers = 256)
+            val config = GroundStationConfig(lostAfter = 1.seconds, streamRates = emptyMap(), requestHome = false, requestPayloads = false, maxPeers = 256)
             val gcs = GroundStation.open(link, this, config)
             try {
                 withTimeout(5.seconds) { flooded.await() }
@@ -107,7 +107,7 @@ class ConnectionTrackingTest : StringSpec({
         coroutineScope {
             val clock = kotlin.time.TestTimeSource()
             val link = ScriptedLink { deliver -> deliver(peer(1), heartbeat(0)) }
-            val config = GroundStationConfig(lostAfter = 1.hours, streamRates = emptyMap(), requestHome = false, clock = clock)
+            val config = GroundStationConfig(lostAfter = 1.hours, streamRates = emptyMap(), requestHome = false, requestPayloads = false, clock = clock)
             val gcs = GroundStation.open(link, this, config)
             try {
                 val found = withTimeout(5.seconds) { gcs.vehicles.first { 1 in it } }.getValue(1)
@@ -132,7 +132,7 @@ class ConnectionTrackingTest : StringSpec({
             coroutineScope {
                 val go = CompletableDeferred<Unit>()
                 val link = ScriptedLink { deliver -> go.await(); deliver(peer(1), armed) }
-                val gcs = GroundStation.open(link, this, GroundStationConfig(streamRates = emptyMap(), requestHome = false))
+                val gcs = GroundStation.open(link, this, GroundStationConfig(streamRates = emptyMap(), requestHome = false, requestPayloads = false))
                 try {
                     // Another thread looks at the fleet as closely as it can, as a command picking its vehicle does.
                     val seen = async(kotlinx.coroutines.Dispatchers.Default) {

@@ -66,7 +66,7 @@ class RoutingTest : StringSpec({
 
     "a message for one vehicle goes only to its address; target 0 goes to every vehicle" {
         coroutineScope {
-            val gcs = GroundStation.open("udpin://127.0.0.1:0", this)
+            val gcs = GroundStation.open("udpin://127.0.0.1:0", this, GroundStationConfig(requestPayloads = false))
             RawVehicle(1, gcs.link.localPort).use { a ->
                 RawVehicle(2, gcs.link.localPort).use { b ->
                     try {

@@ -68,7 +68,7 @@ class StreamRequestsTest : StringSpec({
         val requests = MutableStateFlow<Map<Int, Int>>(emptyMap())
         val position = GlobalPositionInt.builder().lat(411780460).lon(-85957860).alt(120_000).build()
         val config = GroundStationConfig(
-            streamRates = mapOf(33 to 4.0, 1 to 1.0), requestHome = false,
+            streamRates = mapOf(33 to 4.0, 1 to 1.0), requestHome = false, requestPayloads = false,
             streamRequestInterval = 150.milliseconds, streamRequestRounds = 4,
         )
         withScripted(config, { m ->
@@ -89,7 +89,7 @@ class StreamRequestsTest : StringSpec({
 
     "a vehicle found again after being lost is asked for its streams again" {
         val requests = MutableStateFlow(0)
-        val config = GroundStationConfig(streamRates = mapOf(33 to 4.0), requestHome = false, lostAfter = 500.milliseconds, streamRequestRounds = 1)
+        val config = GroundStationConfig(streamRates = mapOf(33 to 4.0), requestHome = false, requestPayloads = false, lostAfter = 500.milliseconds, streamRequestRounds = 1)
         withScripted(config, { m ->
             if (m is CommandLong && m.asks(MavCommands.SET_MESSAGE_INTERVAL, 33)) requests.update { it + 1 }
             emptyList()
@@ -106,7 +106,7 @@ class StreamRequestsTest : StringSpec({
 
     "a long STATUSTEXT sent in chunks reaches statusTexts as one line, even with its chunks reordered" {
         val line = "Mode change to AUTO RTL failed: No landing sequence found"
-        withScripted(GroundStationConfig(streamRates = emptyMap(), requestHome = false), { emptyList() }) { vehicle, scripted ->
+        withScripted(GroundStationConfig(streamRates = emptyMap(), requestHome = false, requestPayloads = false), { emptyList() }) { vehicle, scripted ->
             val texts = async(start = CoroutineStart.UNDISPATCHED) { vehicle.statusTexts.take(2).toList() }
             fun chunk(text: String, seq: Int) = Statustext.builder().severity(MavSeverity.MAV_SEVERITY_WARNING).text(text).id(9).chunkSeq(seq).build()
             scripted.send(chunk(line.substring(50), 1))

@@ -9,7 +9,7 @@ import pod.core.platform.PlatformVehicle
 import pod.core.units.Distance
 import pod.core.units.Location
 import pod.core.units.m
-import pod.core.vehicle.LandedState
+import pod.core.vehicle.airborne
 import pod.dsl.action
 import pod.dsl.and
 import pod.dsl.concurrently
@@ -36,8 +36,8 @@ internal fun homeOf(v: PlatformVehicle): Location {
     return Location(at.latitude, at.longitude) // mission heights are above home
 }
 
-/** True unless [v] reports being on the ground. */
-internal fun isOut(v: PlatformVehicle): Boolean = v.landedState.value != LandedState.ON_GROUND
+/** True while [v] is off the ground (see [pod.core.vehicle.isAirborne]). */
+internal fun isOut(v: PlatformVehicle): Boolean = v.airborne
 
 /**
  * A lawn-mower survey of a [length] × [width] rectangle whose south-west corner is [north]/[east] of

@@ -1,7 +1,11 @@
 package pod.sim
 
+import pod.mavlink.command.CommandResult
+import pod.mavlink.MessageIds
+import pod.core.vehicle.Severity
 import io.dronefleet.mavlink.common.Attitude
 import io.dronefleet.mavlink.common.AutopilotVersion
+import io.dronefleet.mavlink.common.CameraInformation
 import io.dronefleet.mavlink.common.CameraImageCaptured
 import io.dronefleet.mavlink.common.CommandAck
 import io.dronefleet.mavlink.common.ExtendedSysState
@@ -52,6 +56,7 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
         MessageIds.VFR_HUD -> vfrHud(s)
         MessageIds.MISSION_CURRENT -> missionCurrent(s.missionCurrent)
         MessageIds.AUTOPILOT_VERSION -> autopilotVersion()
+        MessageIds.CAMERA_INFORMATION -> if (config.camera) cameraInformation() else null
         else -> null
     }
 
@@ -60,6 +65,13 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
      * and how it packs integer parameters (C cast on ArduPilot, bytewise on PX4). The version is
      * the one the flavour claims to behave like: ArduPilot 4.7.0, PX4 1.16.0 (official releases).
      */
+    /** The simulated camera, as ArduPilot's AP_Camera describes one: vendor and model, sizes unknown (0). */
+    private fun cameraInformation(): CameraInformation = CameraInformation.builder()
+        .timeBootMs(timeBootMs())
+        .vendorName("Pod".toByteArray().copyOf(32))
+        .modelName("sim camera".toByteArray().copyOf(32))
+        .build()
+
     private fun autopilotVersion(): AutopilotVersion {
         val ardupilot = config.autopilot == Autopilot.ARDUPILOT
         val encoding = if (ardupilot) CAPABILITY_PARAM_ENCODE_C_CAST else CAPABILITY_PARAM_ENCODE_BYTEWISE
@@ -79,8 +91,9 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
      * text fills its chunks exactly), as ArduPilot's GCS::send_textv
      * (libraries/GCS_MAVLink/GCS_Common.cpp) sends them. PX4 sends the same way.
      */
-    fun statusTexts(severity: Int, text: String): List<Statustext> {
-        val level = EnumValue.create<MavSeverity>(severity)
+    fun statusTexts(severity: Severity, text: String): List<Statustext> {
+        // MAV_SEVERITY numbers are the core enum's order, EMERGENCY 0 to DEBUG 7.
+        val level = EnumValue.create<MavSeverity>(severity.ordinal)
         if (text.length <= TEXT_FIELD) return listOf(Statustext.builder().severity(level).text(text).build())
         textId = if (textId >= 0xFFFF) 1 else textId + 1
         val chunks = (0..text.length / TEXT_FIELD).map { i -> text.substring(minOf(i * TEXT_FIELD, text.length), minOf((i + 1) * TEXT_FIELD, text.length)) }
@@ -94,7 +107,7 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
     private fun output(out: SimOutput, s: SimState, params: SimParameters): Any? = when (out) {
         is SimOutput.Ack -> CommandAck.builder()
             .command(EnumValue.create<MavCmd>(out.command))
-            .result(EnumValue.create<MavResult>(out.result))
+            .result(EnumValue.create<MavResult>(out.result.mavValue))
             .progress(out.progress)
             .targetSystem(out.targetSystem)
             .targetComponent(out.targetComponent)
@@ -107,7 +120,7 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
             ParamValue.builder()
                 .paramId(def.name)
                 .paramValue(params.wireValue(out.index))
-                .paramType(EnumValue.create<MavParamType>(def.type.mav))
+                .paramType(EnumValue.create<MavParamType>(def.type.mavValue))
                 .paramCount(params.count)
                 .paramIndex(out.index)
                 .build()

@@ -83,7 +83,7 @@ public class SimPlatform private constructor(
             home: Location = SimVehicleConfig.DEFAULT_HOME,
             spacing: Distance = 5.m,
             firstSystemId: Int = 1,
-            payloads: (MavlinkVehicle) -> Set<String> = { MavlinkPlatform.DEFAULT_PAYLOADS },
+            payloads: ((MavlinkVehicle) -> Set<String>)? = null,
             readyTimeout: Duration = 30.seconds,
         ): SimPlatform {
             require(flavors.size in 1..254) { "flavors must name 1..254 vehicles, was ${flavors.size}" }

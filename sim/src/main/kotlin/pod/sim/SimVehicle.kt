@@ -1,5 +1,9 @@
 package pod.sim
 
+import pod.mavlink.MavFrames
+import pod.mavlink.command.MavCommands
+import pod.mavlink.command.CommandResult
+import pod.mavlink.MessageIds
 import io.dronefleet.mavlink.common.CommandInt
 import io.dronefleet.mavlink.common.CommandLong
 import io.dronefleet.mavlink.common.ParamRequestList
@@ -49,7 +53,6 @@ import pod.mavlink.mission.MissionServer
 import pod.mavlink.mission.MissionServerFlavor
 import pod.mavlink.mission.MissionWire
 import pod.sim.autopilot.CommandRequest
-import pod.sim.autopilot.MavResult
 import pod.sim.autopilot.SimAutopilot
 import pod.sim.autopilot.SimOutput
 
@@ -284,23 +287,23 @@ public class SimVehicle(
         autopilot.emit(SimOutput.Ack(cmd.command, result, 0, cmd.sourceSystem, cmd.sourceComponent))
     }
 
-    private suspend fun requestMessage(messageId: Int): Int {
-        val message = messages.build(messageId, autopilot.state()) ?: return MavResult.DENIED
+    private suspend fun requestMessage(messageId: Int): CommandResult {
+        val message = messages.build(messageId, autopilot.state()) ?: return CommandResult.DENIED
         send(message)
-        return MavResult.ACCEPTED
+        return CommandResult.ACCEPTED
     }
 
-    private fun setInterval(messageId: Int, intervalUs: Float): Int {
-        if (messageId == MessageIds.HEARTBEAT || messages.canBuild(messageId).not()) return MavResult.DENIED
+    private fun setInterval(messageId: Int, intervalUs: Float): CommandResult {
+        if (messageId == MessageIds.HEARTBEAT || messages.canBuild(messageId).not()) return CommandResult.DENIED
         val hz = when {
             intervalUs < 0 -> 0.0 // -1 disables the stream
             intervalUs == 0f -> config.streamRates[messageId] ?: 1.0 // 0 restores the default
             else -> 1_000_000.0 / intervalUs
         }
-        if (hz > 1000) return MavResult.DENIED
+        if (hz > 1000) return CommandResult.DENIED
         rates.value = rates.value + (messageId to hz)
         scope?.let { restartStream(it, messageId, hz) }
-        return MavResult.ACCEPTED
+        return CommandResult.ACCEPTED
     }
 
     /** Hands a mission-protocol message to the mission server and sends its replies to the asker. */
@@ -339,7 +342,7 @@ public class SimVehicle(
 
     private fun homeItem(home: pod.core.units.Location): MissionItem = home.let { home ->
         MissionItem(
-            seq = 0, frame = 0, command = 16,
+            seq = 0, frame = MavFrames.GLOBAL, command = MavCommands.NAV_WAYPOINT,
             x = (home.latitude * 1e7).roundToLong().toInt(), y = (home.longitude * 1e7).roundToLong().toInt(),
             z = home.altitude.meters.toFloat(),
         )

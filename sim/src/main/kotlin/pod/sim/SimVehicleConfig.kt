@@ -1,5 +1,6 @@
 package pod.sim
 
+import pod.mavlink.MessageIds
 import pod.core.units.Location
 import pod.core.units.m
 import pod.core.vehicle.Autopilot
@@ -56,6 +57,11 @@ public data class SimVehicleConfig(
      * `mapOf("DISARM_DELAY" to 0.0)`. Unknown names fail when the vehicle is created.
      */
     public val parameters: Map<String, Double> = emptyMap(),
+    /**
+     * Whether it carries a camera, and says so as ArduPilot 4.5+ does: CAMERA_INFORMATION when asked
+     * with MAV_CMD_REQUEST_MESSAGE (refused without a camera), so `pick { payload("camera") }` finds it.
+     */
+    public val camera: Boolean = true,
     /** Simulated time the physics advances per integration step. */
     public val physicsStep: Duration = 50.milliseconds,
     /**
@@ -123,30 +129,4 @@ public data class SimVehicleConfig(
             MessageIds.MISSION_CURRENT to 1.0,
         )
     }
-}
-
-/** The MAVLink message ids the simulator streams. */
-public object MessageIds {
-    /** HEARTBEAT. */
-    public const val HEARTBEAT: Int = 0
-    /** SYS_STATUS. */
-    public const val SYS_STATUS: Int = 1
-    /** GPS_RAW_INT. */
-    public const val GPS_RAW_INT: Int = 24
-    /** ATTITUDE. */
-    public const val ATTITUDE: Int = 30
-    /** MISSION_CURRENT. */
-    public const val MISSION_CURRENT: Int = 42
-
-    /** VFR_HUD. */
-    public const val VFR_HUD: Int = 74
-
-    /** GLOBAL_POSITION_INT. */
-    public const val GLOBAL_POSITION_INT: Int = 33
-    /** AUTOPILOT_VERSION (sent when asked with MAV_CMD_REQUEST_MESSAGE, not streamed). */
-    public const val AUTOPILOT_VERSION: Int = 148
-    /** HOME_POSITION. */
-    public const val HOME_POSITION: Int = 242
-    /** EXTENDED_SYS_STATE. */
-    public const val EXTENDED_SYS_STATE: Int = 245
 }

@@ -1,5 +1,6 @@
 package pod.sim
 
+import pod.core.vehicle.Severity
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.collections.shouldHaveSize
 import io.kotest.matchers.shouldBe
@@ -10,7 +11,7 @@ class SimStatusTextTest : StringSpec({
     val messages = SimMessages(SimVehicleConfig(systemId = 1), TimeSource.Monotonic.markNow())
 
     "a text that fits is one STATUSTEXT with id 0" {
-        val sent = messages.statusTexts(4, "Arm: Accels inconsistent")
+        val sent = messages.statusTexts(Severity.WARNING, "Arm: Accels inconsistent")
         sent shouldHaveSize 1
         sent.single().id() shouldBe 0
         sent.single().text() shouldBe "Arm: Accels inconsistent"
@@ -18,16 +19,16 @@ class SimStatusTextTest : StringSpec({
 
     "a longer text goes in 50-character chunks with one new id, counted from 0, the last one shorter" {
         val line = "Mode change to AUTO RTL failed: No landing sequence found"
-        val sent = messages.statusTexts(4, line)
+        val sent = messages.statusTexts(Severity.WARNING, line)
         sent.map { it.text() } shouldBe listOf(line.take(50), line.drop(50))
         sent.map { it.chunkSeq() } shouldBe listOf(0, 1)
         sent.map { it.id() }.distinct().single().let { it != 0 } shouldBe true
-        val next = messages.statusTexts(4, line)
+        val next = messages.statusTexts(Severity.WARNING, line)
         (next.first().id() != sent.first().id()) shouldBe true
     }
 
     "a text that fills its chunks exactly ends with an empty chunk" {
-        val sent = messages.statusTexts(6, "y".repeat(100))
+        val sent = messages.statusTexts(Severity.INFO, "y".repeat(100))
         sent.map { it.text() } shouldBe listOf("y".repeat(50), "y".repeat(50), "")
         sent.map { it.chunkSeq() } shouldBe listOf(0, 1, 2)
     }

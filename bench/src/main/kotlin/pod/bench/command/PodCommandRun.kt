@@ -83,7 +83,7 @@ internal suspend fun podRound(vehicles: List<MavlinkVehicle>, tap: CommandTap?, 
 suspend fun podRun(case: CommandCase, fleet: FleetProcess, o: CommandBenchOptions): CommandRun = coroutineScope {
     val tap = CommandTap(MavlinkLink.open("udpin://127.0.0.1:0"))
     // Heartbeats cross the lossy relays too: the default 3 s would call a vehicle lost now and then.
-    val gcs = GroundStation.open(tap, this, GroundStationConfig(streamRates = emptyMap(), requestHome = false, lostAfter = 30.seconds))
+    val gcs = GroundStation.open(tap, this, GroundStationConfig(streamRates = emptyMap(), requestHome = false, requestPayloads = false, lostAfter = 30.seconds))
     var stopped: Map<String, String>? = null
     try {
         fleet.start(case, o.seed, gcs.link.localPort)?.let { return@coroutineScope CommandRun(CommandStation.POD, case, emptyList(), setupError = it) }

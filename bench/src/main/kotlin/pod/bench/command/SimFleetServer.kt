@@ -104,7 +104,7 @@ private const val WARM_UP_ROUNDS = 300
  */
 private suspend fun warmUp(): Pair<Double, Double> = coroutineScope {
     val started = System.nanoTime()
-    val gcs = GroundStation.open(MavlinkLink.open("udpin://127.0.0.1:0"), this, GroundStationConfig(streamRates = emptyMap(), requestHome = false))
+    val gcs = GroundStation.open(MavlinkLink.open("udpin://127.0.0.1:0"), this, GroundStationConfig(streamRates = emptyMap(), requestHome = false, requestPayloads = false))
     val fleet = SimFleet.start(10, this, SimVehicleConfig(systemId = 1, gcs = "udpout://127.0.0.1:${gcs.link.localPort}"))
     try {
         val vehicles = withTimeout(30.seconds) { gcs.vehicles.first { it.size >= 10 } }.values.sortedBy { it.systemId }

@@ -19,7 +19,7 @@ import pod.core.vehicle.VehicleType
 class InstantVehicle(override val id: Int) : PlatformVehicle {
     override val name: String = "v$id"
     override val type: VehicleType = VehicleType.QUADROTOR
-    override val payloads: Set<String> = emptySet()
+    override val payloads: kotlinx.coroutines.flow.StateFlow<Set<String>> = kotlinx.coroutines.flow.MutableStateFlow(emptySet())
     override val connection: StateFlow<ConnectionState> = MutableStateFlow(ConnectionState.CONNECTED)
     override val position: StateFlow<Position?> = MutableStateFlow(null)
     override val battery: StateFlow<Battery?> = MutableStateFlow(Battery(1.0, 16.8))

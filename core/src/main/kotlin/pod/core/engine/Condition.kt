@@ -20,8 +20,16 @@ public interface ConditionScope {
     /** The current value of [flow], noted as something this condition depends on. */
     public fun <T> read(flow: StateFlow<T>): T
 
-    /** Remaining battery charge of [vehicle], 0..1, or 1 when it does not report one yet. */
-    public fun battery(vehicle: PlatformVehicle): Double = read(vehicle.battery)?.remaining ?: 1.0
+    /**
+     * Remaining battery charge of [vehicle], 0..1, or NaN while it reports none (no battery status
+     * yet, or a pack it cannot estimate). Unknown never counts as full, nor as empty: every comparison
+     * with NaN is false, so `battery(v) < 0.3` does not fire and `battery(v) > 0.5` does not hold
+     * until the vehicle says. Ask [batteryKnown] to tell the two apart.
+     */
+    public fun battery(vehicle: PlatformVehicle): Double = read(vehicle.battery)?.remaining ?: Double.NaN
+
+    /** True once [vehicle] reports its remaining charge (see [battery]). */
+    public fun batteryKnown(vehicle: PlatformVehicle): Boolean = read(vehicle.battery)?.remaining != null
 
     /** Where [vehicle] is, or null before its first position report. */
     public fun position(vehicle: PlatformVehicle): Position? = read(vehicle.position)

@@ -23,7 +23,7 @@ public data class PickRequest(
     public val payloads: Set<String> = emptySet(),
     /** The area the vehicles must be in, or null for anywhere. */
     public val region: Region? = null,
-    /** Smallest remaining battery charge, 0..1, or null for any. */
+    /** Smallest remaining battery charge, 0..1, or null for any; a vehicle that reports no charge does not meet it. */
     public val minBattery: Double? = null,
     /** How long to wait for enough vehicles. */
     public val timeout: Duration = DEFAULT_TIMEOUT,
@@ -38,9 +38,10 @@ public data class PickRequest(
     public fun accepts(vehicle: PlatformVehicle, scope: ConditionScope): Boolean {
         if (types.isNotEmpty() && vehicle.type !in types) return false
         if (ids.isNotEmpty() && vehicle.id !in ids) return false
-        if (!vehicle.payloads.containsAll(payloads)) return false
+        if (payloads.isNotEmpty() && !scope.read(vehicle.payloads).containsAll(payloads)) return false
         if (scope.read(vehicle.connection) != ConnectionState.CONNECTED) return false
-        if (minBattery != null && scope.battery(vehicle) < minBattery) return false
+        // A vehicle whose charge is unknown (NaN) does not meet a battery requirement until it reports one.
+        if (minBattery != null && !(scope.battery(vehicle) >= minBattery)) return false
         if (region != null) {
             val at = scope.position(vehicle)?.location ?: return false
             if (region.center.distanceTo(at) > region.radius) return false

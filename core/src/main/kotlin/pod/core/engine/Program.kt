@@ -86,8 +86,14 @@ public class Program internal constructor(
         engine.emit(EngineEvent.Message(engine.now(), text))
     }
 
-    /** Remaining battery of [vehicle], 0..1 (1 when it reports none yet). */
-    public fun battery(vehicle: PlatformVehicle): Double = vehicle.battery.value?.remaining ?: 1.0
+    /**
+     * Remaining battery of [vehicle], 0..1, or NaN while it reports none: unknown is neither full
+     * nor empty, every comparison with it is false (see [ConditionScope.battery]).
+     */
+    public fun battery(vehicle: PlatformVehicle): Double = vehicle.battery.value?.remaining ?: Double.NaN
+
+    /** True once [vehicle] reports its remaining charge. */
+    public fun batteryKnown(vehicle: PlatformVehicle): Boolean = vehicle.battery.value?.remaining != null
 
     /** Where [vehicle] is, or null before its first report. */
     public fun position(vehicle: PlatformVehicle): Position? = vehicle.position.value

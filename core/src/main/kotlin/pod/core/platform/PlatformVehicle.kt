@@ -19,8 +19,11 @@ public interface PlatformVehicle {
     /** Airframe kind. */
     public val type: VehicleType
 
-    /** What it carries ("camera", …), for `pick { payload(…) }`. */
-    public val payloads: Set<String>
+    /**
+     * What it carries ("camera", …), for `pick { payload(…) }`: a flow, because a real vehicle
+     * tells only after it is heard (a pick waiting for a camera is woken when one is reported).
+     */
+    public val payloads: StateFlow<Set<String>>
 
     /** Whether the vehicle is heard. */
     public val connection: StateFlow<ConnectionState>

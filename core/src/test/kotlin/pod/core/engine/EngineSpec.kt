@@ -169,6 +169,44 @@ class EngineSpec : FunSpec({
         }
     }
 
+    test("a pick for a payload waits until a vehicle reports carrying it") {
+        runTest {
+            val fleet = FakeFleet(1)
+            val v = fleet[1]
+            v.payloads.value = emptySet()
+            engine(fleet).run {
+                val picking = launch { pick(PickRequest(count = 1, payloads = setOf("camera"))).ids shouldBe setOf(1) }
+                testScheduler.advanceTimeBy(10.seconds)
+                picking.isActive shouldBe true
+                v.payloads.value = setOf("camera")
+                picking.join()
+            }
+        }
+    }
+
+    test("an unknown battery is neither full nor empty: no low-battery condition fires and a battery pick waits until it is reported") {
+        runTest {
+            val fleet = FakeFleet(1)
+            val v = fleet[1]
+            v.battery.value = null
+            engine(fleet).run {
+                battery(v).isNaN() shouldBe true
+                batteryKnown(v) shouldBe false
+                await(Condition { !batteryKnown(v) && !(battery(v) < 0.3) && !(battery(v) > 0.5) })
+                val low = launch { await(Condition { battery(v) < 0.3 }) }
+                val picking = launch { pick(PickRequest(count = 1, minBattery = 0.5)).ids shouldBe setOf(1) }
+                testScheduler.advanceTimeBy(10.seconds)
+                low.isActive shouldBe true
+                picking.isActive shouldBe true
+                v.setBattery(0.9) // now known and full enough: the pick goes through, the low condition still does not fire
+                picking.join()
+                low.isActive shouldBe true
+                v.setBattery(0.2)
+                low.join()
+            }
+        }
+    }
+
     test("a pick that cannot be met times out naming what it asked for") {
         runTest {
             val fleet = FakeFleet(2)

@@ -24,9 +24,10 @@ import kotlin.time.Duration.Companion.seconds
 internal class FakeVehicle(
     override val id: Int,
     override val type: VehicleType = VehicleType.QUADROTOR,
-    override val payloads: Set<String> = setOf("camera"),
+    payloads: Set<String> = setOf("camera"),
     at: Location = FakeFleet.HOME.offset((id * 10).m, 0.m),
 ) : PlatformVehicle {
+    override val payloads = MutableStateFlow(payloads)
     override val name: String = "fake-$id"
     override val connection = MutableStateFlow(ConnectionState.CONNECTED)
     override val position = MutableStateFlow<Position?>(Position(at, 0.m, null, pod.core.units.Speed.ZERO, pod.core.units.Speed.ZERO, pod.core.units.Speed.ZERO))

@@ -20,8 +20,10 @@ import pod.core.units.m
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.ConnectionState
 import pod.core.vehicle.LandedState
+import pod.core.vehicle.isAirborne
 import pod.core.vehicle.VehicleLost
 import pod.core.vehicle.VehicleType
+import pod.mavlink.MavFrames
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.command.CommandRejected
 import pod.mavlink.command.CommandResult
@@ -40,6 +42,8 @@ import pod.mavlink.command.MavCommands.NAV_LAND
 import pod.mavlink.command.MavCommands.NAV_RETURN_TO_LAUNCH
 import pod.mavlink.command.MavCommands.NAV_TAKEOFF
 import pod.mavlink.command.MavCommands.SET_MESSAGE_INTERVAL
+import pod.mavlink.command.SpeedTypes
+import pod.core.mission.SpeedKind
 import pod.mavlink.command.VehicleCommand
 import pod.mavlink.telemetry.FlightModes
 import pod.mavlink.telemetry.ModeRole
@@ -215,7 +219,7 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
                 param2 = REPOSITION_FLAG_CHANGE_MODE.toFloat(),
                 param4 = Float.NaN,
                 param5 = target.latitude, param6 = target.longitude, param7 = target.altitude.meters.toFloat(),
-                frame = MAV_FRAME_GLOBAL,
+                frame = MavFrames.GLOBAL_INT,
             ),
         )
         confirm("goto", "mode $guided", vehicle.telemetry.mode) { it?.name == guided }
@@ -304,7 +308,7 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
     /** Sets the [kind] speed (DO_CHANGE_SPEED) for the current flight and mission. */
     public suspend fun setSpeed(speed: Speed, kind: SpeedKind = SpeedKind.GROUND) {
         require(speed.metersPerSecond > 0 && speed.metersPerSecond <= 100) { "speed must be in (0, 100] m/s, was $speed" }
-        command(VehicleCommand(DO_CHANGE_SPEED, param1 = kind.mavValue.toFloat(), param2 = speed.metersPerSecond.toFloat(), param3 = -1f))
+        command(VehicleCommand(DO_CHANGE_SPEED, param1 = SpeedTypes.of(kind).toFloat(), param2 = speed.metersPerSecond.toFloat(), param3 = -1f))
     }
 
     /** Sets home to [location] (altitude above sea level), or to where the vehicle is when null. */
@@ -313,7 +317,7 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
             if (location == null) {
                 VehicleCommand(DO_SET_HOME, param1 = 1f)
             } else {
-                VehicleCommand(DO_SET_HOME, param5 = location.latitude, param6 = location.longitude, param7 = location.altitude.meters.toFloat(), frame = MAV_FRAME_GLOBAL)
+                VehicleCommand(DO_SET_HOME, param5 = location.latitude, param6 = location.longitude, param7 = location.altitude.meters.toFloat(), frame = MavFrames.GLOBAL_INT)
             },
         )
     }
@@ -358,7 +362,7 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
     /** Whether the vehicle shows, within a few telemetry reports, that it has left the ground. */
     private suspend fun leavingGround(): Boolean = withTimeoutOrNull(3.seconds) {
         combine(vehicle.telemetry.landedState, vehicle.telemetry.position) { landed, position ->
-            landed == LandedState.TAKEOFF || landed == LandedState.IN_AIR || (position?.relativeAltitude?.meters ?: 0.0) > 0.5
+            isAirborne(landed, position?.relativeAltitude)
         }.first { it }
     } ?: false
 
@@ -404,9 +408,6 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
     }
 
     private companion object {
-        /** MAV_FRAME_GLOBAL_INT: altitude above mean sea level, lat/lon as degrees × 10⁷. */
-        const val MAV_FRAME_GLOBAL = 5
-
         /** Between arm attempts while the vehicle initialises: ArduPilot runs its pre-arm checks at 1 Hz. */
         val ARM_RETRY = 1.seconds
         const val GPS_FIX_3D = 3

@@ -1,5 +1,7 @@
 package pod.mavlink.command
 
+import pod.mavlink.MavFrames
+
 import io.dronefleet.mavlink.common.CommandAck
 import io.dronefleet.mavlink.common.CommandInt
 import io.dronefleet.mavlink.common.CommandLong
@@ -11,7 +13,6 @@ import kotlin.math.roundToLong
 
 /** Translates [VehicleCommand]s to COMMAND_LONG / COMMAND_INT and COMMAND_ACK to [CommandReply]. */
 public object CommandWire {
-    private val globalFrames = setOf(0, 3, 5, 6, 10, 11)
 
     /** The COMMAND_LONG or COMMAND_INT for [command], addressed to ([targetSystem], [targetComponent]). */
     public fun encode(command: VehicleCommand, targetSystem: Int, targetComponent: Int, confirmation: Int = 0): Any {
@@ -21,7 +22,7 @@ public object CommandWire {
             .param1(command.param1).param2(command.param2).param3(command.param3).param4(command.param4)
             .param5(command.param5.toFloat()).param6(command.param6.toFloat()).param7(command.param7)
             .build()
-        val scale = if (frame in globalFrames) 1e7 else 1.0
+        val scale = if (MavFrames.isGlobal(frame)) 1e7 else 1.0
         return CommandInt.builder()
             .targetSystem(targetSystem).targetComponent(targetComponent)
             .frame(EnumValue.create<MavFrame>(frame)).command(EnumValue.create<MavCmd>(command.command))
@@ -39,7 +40,7 @@ public object CommandWire {
         )
         is CommandInt -> {
             val frame = message.frame().value()
-            val scale = if (frame in globalFrames) 1e-7 else 1.0
+            val scale = if (MavFrames.isGlobal(frame)) 1e-7 else 1.0
             VehicleCommand(
                 message.command().value(), message.param1(), message.param2(), message.param3(), message.param4(),
                 message.x() * scale, message.y() * scale, message.z(), frame,

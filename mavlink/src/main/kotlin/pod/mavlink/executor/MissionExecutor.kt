@@ -27,6 +27,7 @@ import pod.core.units.Location
 import pod.core.units.m
 import pod.core.vehicle.ConnectionState
 import pod.core.vehicle.LandedState
+import pod.core.vehicle.isAirborne
 import pod.core.vehicle.VehicleLost
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.plan.MissionFlavor
@@ -200,7 +201,7 @@ public class MissionExecutor(
                 is Input.Vehicle -> {
                     if (input.connection == ConnectionState.LOST) throw VehicleLost(vehicle.systemId, during)
                     seen = input
-                    if (input.landed == LandedState.IN_AIR || (input.position?.relativeAltitude?.meters ?: 0.0) > 1.0) airborneSeen = true
+                    if (isAirborne(input.landed, input.position?.relativeAltitude, input.armed)) airborneSeen = true
                 }
             }
             if (complete(seen)) {
@@ -212,11 +213,8 @@ public class MissionExecutor(
         }
     }
 
-    private fun airborne(): Boolean {
-        val landed = vehicle.telemetry.landedState.value
-        val height = vehicle.telemetry.position.value?.relativeAltitude?.meters ?: 0.0
-        return landed == LandedState.IN_AIR || landed == LandedState.TAKEOFF || landed == LandedState.LANDING ||
-            (vehicle.telemetry.armed.value && height > 1.0)
+    private fun airborne(): Boolean = vehicle.telemetry.let {
+        isAirborne(it.landedState.value, it.position.value?.relativeAltitude, it.armed.value)
     }
 
     /** The vehicle's home: HOME_POSITION, or where its position report puts it. */

@@ -1,5 +1,7 @@
 package pod.mavlink.mission
 
+import pod.mavlink.MavFrames
+
 /** Which of a vehicle's three lists a transfer concerns (MAV_MISSION_TYPE). */
 public enum class MissionType(
     /** The MAV_MISSION_TYPE number on the wire. */
@@ -62,16 +64,19 @@ public data class MissionItem(
     public val longitude: Double get() = y / 1e7
 
     /** True when [x] and [y] are a latitude and longitude (MAV_FRAME_GLOBAL* and terrain frames). */
-    public val isGlobal: Boolean get() = frame in GLOBAL_FRAMES
+    public val isGlobal: Boolean get() = MavFrames.isGlobal(frame)
 
     public companion object {
         /** MAV_FRAME numbers whose x/y are latitude/longitude. */
-        public val GLOBAL_FRAMES: Set<Int> = setOf(0, 3, 5, 6, 10, 11)
+        public val GLOBAL_FRAMES: Set<Int> = setOf(
+            MavFrames.GLOBAL, MavFrames.GLOBAL_RELATIVE_ALT, MavFrames.GLOBAL_INT, MavFrames.GLOBAL_RELATIVE_ALT_INT,
+            MavFrames.GLOBAL_TERRAIN_ALT, MavFrames.GLOBAL_TERRAIN_ALT_INT,
+        )
 
         /** MAV_FRAME numbers whose x/y are local positions in metres (sent × 10⁴). */
         public val LOCAL_FRAMES: Set<Int> = setOf(1, 4, 7, 8, 9, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21)
 
         /** MAV_FRAME_MISSION: x/y are plain parameters. */
-        public const val FRAME_MISSION: Int = 2
+        public const val FRAME_MISSION: Int = MavFrames.MISSION
     }
 }

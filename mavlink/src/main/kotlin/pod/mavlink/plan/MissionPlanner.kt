@@ -9,6 +9,8 @@ import pod.core.mission.Mission
 import pod.core.mission.MissionStep
 import pod.core.mission.PrecisionLand
 import pod.core.mission.SpeedKind
+import pod.mavlink.command.SpeedTypes
+import pod.mavlink.MavFrames
 import pod.core.units.Location
 import pod.mavlink.command.MavCommands
 import pod.mavlink.command.VehicleCommand
@@ -34,10 +36,10 @@ import pod.mavlink.mission.MissionItem
  */
 public object MissionPlanner {
     /** MAV_FRAME_GLOBAL (altitude above mean sea level). */
-    public const val FRAME_GLOBAL: Int = 0
+    public const val FRAME_GLOBAL: Int = MavFrames.GLOBAL
 
     /** MAV_FRAME_GLOBAL_RELATIVE_ALT (altitude above home). */
-    public const val FRAME_RELATIVE: Int = 3
+    public const val FRAME_RELATIVE: Int = MavFrames.GLOBAL_RELATIVE_ALT
 
     /** Speed assumed to fly one turn of a loiter PX4 must fly as a timed loiter. */
     public const val LOITER_TURN_SPEED_MPS: Double = 5.0
@@ -73,7 +75,7 @@ public object MissionPlanner {
                 MissionStep.ReturnHome -> out.add(index, unpositioned(MavCommands.NAV_RETURN_TO_LAUNCH))
                 is MissionStep.ChangeSpeed -> {
                     val rate = step.kind == SpeedKind.CLIMB || step.kind == SpeedKind.DESCENT
-                    val p1 = speedType(step.kind).toFloat()
+                    val p1 = SpeedTypes.of(step.kind).toFloat()
                     val p2 = step.speed.metersPerSecond.toFloat()
                     if (rate && flavor != MissionFlavor.ARDUCOPTER) {
                         out.command(index, VehicleCommand(MavCommands.DO_CHANGE_SPEED, param1 = p1, param2 = p2, param3 = -1f))
@@ -131,12 +133,6 @@ public object MissionPlanner {
         PrecisionLand.REQUIRED -> 2
     }
 
-    internal fun speedType(kind: SpeedKind): Int = when (kind) {
-        SpeedKind.AIR -> 0
-        SpeedKind.GROUND -> 1
-        SpeedKind.CLIMB -> 2
-        SpeedKind.DESCENT -> 3
-    }
 
     private val Location.latE7: Int get() = (latitude * 1e7).roundToLong().toInt()
     private val Location.lonE7: Int get() = (longitude * 1e7).roundToLong().toInt()

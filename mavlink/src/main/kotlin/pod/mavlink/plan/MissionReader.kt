@@ -6,7 +6,7 @@ import pod.core.mission.LoiterDuration
 import pod.core.mission.Mission
 import pod.core.mission.MissionStep
 import pod.core.mission.PrecisionLand
-import pod.core.mission.SpeedKind
+import pod.mavlink.command.SpeedTypes
 import pod.core.units.Location
 import pod.core.units.deg
 import pod.core.units.m
@@ -60,12 +60,7 @@ public object MissionReader {
         )
         MavCommands.NAV_RETURN_TO_LAUNCH -> MissionStep.ReturnHome
         MavCommands.DO_CHANGE_SPEED -> MissionStep.ChangeSpeed(
-            when (item.param1.roundToInt()) {
-                0 -> SpeedKind.AIR
-                2 -> SpeedKind.CLIMB
-                3 -> SpeedKind.DESCENT
-                else -> SpeedKind.GROUND
-            },
+            SpeedTypes.kindOf(item.param1.roundToInt()),
             item.param2.toDouble().mps,
         )
         MavCommands.NAV_CONTINUE_AND_CHANGE_ALT -> MissionStep.ChangeAltitude(item.z.toDouble().m)

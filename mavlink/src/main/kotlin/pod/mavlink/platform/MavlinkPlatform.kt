@@ -38,8 +38,12 @@ public class MavlinkPlatform(
     override val timeScale: Double = 1.0,
     /** Time limits of every mission run. */
     public val timing: ExecutorTiming = ExecutorTiming(),
-    /** What each vehicle carries, asked once per vehicle when it is first heard. */
-    private val payloads: (MavlinkVehicle) -> Set<String> = { DEFAULT_PAYLOADS },
+    /**
+     * What each vehicle carries, when the app knows better than the vehicle says (a gripper on
+     * vehicle 3), asked once per vehicle; null (the default): what each vehicle reports
+     * ([MavlinkVehicle.payloads]), as it reports it.
+     */
+    private val payloads: ((MavlinkVehicle) -> Set<String>)? = null,
 ) : Platform {
     private val adapters = HashMap<Int, MavlinkPlatformVehicle>()
     private val _vehicles = MutableStateFlow(adapt(usable(station.vehicles.value.values.map { it to lacking(it) })))
@@ -109,12 +113,8 @@ public class MavlinkPlatform(
 
     private fun adapt(heard: Map<Int, MavlinkVehicle>): List<PlatformVehicle> = synchronized(adapters) {
         heard.toSortedMap().map { (id, v) ->
-            adapters[id]?.takeIf { it.vehicle === v } ?: MavlinkPlatformVehicle(v, payloads(v)).also { adapters[id] = it }
+            adapters[id]?.takeIf { it.vehicle === v } ?: MavlinkPlatformVehicle(v, payloads?.let { MutableStateFlow(it(v)).asStateFlow() } ?: v.payloads).also { adapters[id] = it }
         }
     }
 
-    public companion object {
-        /** What a vehicle carries unless the payload function says otherwise. */
-        public val DEFAULT_PAYLOADS: Set<String> = setOf("camera")
-    }
 }

@@ -14,7 +14,8 @@ import pod.mavlink.MavlinkVehicle
 public class MavlinkPlatformVehicle internal constructor(
     /** The MAVLink vehicle underneath. */
     public val vehicle: MavlinkVehicle,
-    override val payloads: Set<String>,
+    /** What it carries: what the vehicle reported ([MavlinkVehicle.payloads]) unless the platform was told. */
+    override val payloads: StateFlow<Set<String>>,
 ) : PlatformVehicle {
     override val id: Int get() = vehicle.systemId
     override val type: VehicleType get() = vehicle.identity.value.type

@@ -36,7 +36,7 @@ private fun ack(command: Int, result: CommandResult, progress: Int? = null, targ
 
 /** Runs [block] with a ground station and one scripted vehicle on loopback. */
 private suspend fun withVehicle(
-    config: GroundStationConfig = GroundStationConfig(streamRates = emptyMap()),
+    config: GroundStationConfig = GroundStationConfig(streamRates = emptyMap(), requestPayloads = false),
     autopilot: Int = MavlinkEnums.MAV_AUTOPILOT_ARDUPILOTMEGA,
     answer: suspend (Any) -> List<Any>,
     block: suspend CoroutineScope.(MavlinkVehicle, ScriptedVehicle) -> Unit,
@@ -141,7 +141,7 @@ class CommandServiceSpec : StringSpec({
 
     "a vehicle that never answers fails the command within its timeout; one that falls silent is lost" {
         withVehicle(
-            config = GroundStationConfig(streamRates = emptyMap(), lostAfter = 500.milliseconds),
+            config = GroundStationConfig(streamRates = emptyMap(), requestPayloads = false, lostAfter = 500.milliseconds),
             answer = { emptyList() },
         ) { v, sim ->
             v.commands.timing = CommandTiming(timeout = 1.seconds, initialAttemptTimeout = 100.milliseconds, maxAttemptTimeout = 300.milliseconds)

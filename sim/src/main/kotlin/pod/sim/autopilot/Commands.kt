@@ -1,6 +1,10 @@
 package pod.sim.autopilot
 
+import pod.mavlink.command.CommandResult
+import pod.core.vehicle.Severity
 import pod.core.units.Location
+import pod.mavlink.MavFrames
+import pod.mavlink.MessageIds
 import pod.core.units.m
 import pod.mavlink.command.MavCommandParams.ARM_FORCE_MAGIC
 import pod.mavlink.command.MavCommandParams.MODE_FLAG_CUSTOM_MODE_ENABLED
@@ -20,12 +24,12 @@ import pod.mavlink.command.MavCommands.NAV_RETURN_TO_LAUNCH
 import pod.mavlink.command.MavCommands.NAV_TAKEOFF
 import pod.mavlink.command.MavCommands.PREFLIGHT_CALIBRATION
 import pod.mavlink.telemetry.FlightModes
-import pod.sim.autopilot.MavResult.ACCEPTED
-import pod.sim.autopilot.MavResult.DENIED
-import pod.sim.autopilot.MavResult.FAILED
-import pod.sim.autopilot.MavResult.IN_PROGRESS
-import pod.sim.autopilot.MavResult.TEMPORARILY_REJECTED
-import pod.sim.autopilot.MavResult.UNSUPPORTED
+import pod.mavlink.command.CommandResult.ACCEPTED
+import pod.mavlink.command.CommandResult.DENIED
+import pod.mavlink.command.CommandResult.FAILED
+import pod.mavlink.command.CommandResult.IN_PROGRESS
+import pod.mavlink.command.CommandResult.TEMPORARILY_REJECTED
+import pod.mavlink.command.CommandResult.UNSUPPORTED
 
 /**
  * The vehicle side of the command protocol: each COMMAND_LONG / COMMAND_INT gets the COMMAND_ACK
@@ -66,7 +70,7 @@ internal class Commands(private val ap: SimAutopilot) {
     /** Handles the legacy SET_MODE message; ArduPilot acknowledges it as "command 11", PX4 as DO_SET_MODE. */
     fun handleSetMode(baseMode: Int, customMode: Long, sourceSystem: Int, sourceComponent: Int) {
         val result = setMode(baseMode, customMode)
-        answer(SimOutput.Ack(if (ap.isPx4) DO_SET_MODE else SET_MODE_MESSAGE, result, 0, sourceSystem, sourceComponent))
+        answer(SimOutput.Ack(if (ap.isPx4) DO_SET_MODE else MessageIds.SET_MODE, result, 0, sourceSystem, sourceComponent))
     }
 
     /** Advances long-running commands by [dt] seconds. */
@@ -84,7 +88,7 @@ internal class Commands(private val ap: SimAutopilot) {
         }
     }
 
-    private fun ack(cmd: CommandRequest, result: Int, progress: Int) =
+    private fun ack(cmd: CommandRequest, result: CommandResult, progress: Int) =
         answer(SimOutput.Ack(cmd.command, result, progress, cmd.sourceSystem, cmd.sourceComponent))
 
     /**
@@ -101,11 +105,11 @@ internal class Commands(private val ap: SimAutopilot) {
         explanations.clear()
     }
 
-    private fun refuse(text: String, severity: Int = Severity.CRITICAL) {
+    private fun refuse(text: String, severity: Severity = Severity.CRITICAL) {
         explanations += SimOutput.Text(severity, text)
     }
 
-    private fun armDisarm(cmd: CommandRequest): Int {
+    private fun armDisarm(cmd: CommandRequest): CommandResult {
         val forced = cmd.param2.toInt() == ARM_FORCE_MAGIC
         return when (cmd.param1.toInt()) {
             1 -> when {
@@ -178,7 +182,7 @@ internal class Commands(private val ap: SimAutopilot) {
 
     private fun px4Mode(main: Int, sub: Int): Long = (main.toLong() shl 16) or (sub.toLong() shl 24)
 
-    private fun setMode(baseMode: Int, customMode: Long): Int {
+    private fun setMode(baseMode: Int, customMode: Long): CommandResult {
         if (baseMode and MODE_FLAG_CUSTOM_MODE_ENABLED == 0) return if (ap.isPx4) TEMPORARILY_REJECTED else UNSUPPORTED
         val name = FlightModes.decode(ap.autopilot, ap.type, customMode).name
         if (name.startsWith("MODE(") || (ap.isPx4 && name == "AUTO")) {
@@ -189,7 +193,7 @@ internal class Commands(private val ap: SimAutopilot) {
     }
 
     /** Switches to [name] when the flavour allows it now: ACCEPTED, or the flavour's refusal. */
-    private fun modeResult(name: String): Int {
+    private fun modeResult(name: String): CommandResult {
         val refused = if (ap.isPx4) TEMPORARILY_REJECTED else FAILED
         val behaviour = Modes.behaviour(ap.autopilot, ap.type, name) ?: return refused
         if (name == ap.modeName && behaviour != Behaviour.AUTO) return ACCEPTED
@@ -208,7 +212,7 @@ internal class Commands(private val ap: SimAutopilot) {
         return ACCEPTED
     }
 
-    private fun takeoff(cmd: CommandRequest): Int {
+    private fun takeoff(cmd: CommandRequest): CommandResult {
         if (ap.isPx4) {
             val amsl = cmd.z.takeIf { it.isFinite() }?.toDouble() ?: ap.takeoffAltitude(null)
             if (!ap.flying && !ap.positionReady) return TEMPORARILY_REJECTED.also { refuse("Takeoff denied! Please disarm and retry") }
@@ -219,7 +223,7 @@ internal class Commands(private val ap: SimAutopilot) {
             if (ap.activity is Activity.Takeoff || ap.flying) ap.activity = Activity.Takeoff(maxOf(amsl, ap.ground + 1.0), "AUTO.LOITER")
             return ACCEPTED
         }
-        if (cmd.isInt && cmd.frame != FRAME_GLOBAL_RELATIVE_ALT) return DENIED
+        if (cmd.isInt && cmd.frame != MavFrames.GLOBAL_RELATIVE_ALT) return DENIED
         if (!ap.armed || ap.flying) return FAILED
         val altitude = ap.home.altitude.meters + cmd.z.toDouble()
         if (ap.multirotor) {
@@ -232,13 +236,13 @@ internal class Commands(private val ap: SimAutopilot) {
         return ACCEPTED
     }
 
-    private fun land(): Int = when {
+    private fun land(): CommandResult = when {
         ap.isPx4 -> modeResult("AUTO.LAND")
         ap.multirotor -> modeResult("LAND")
         else -> UNSUPPORTED // ArduPlane lands through its mission's landing sequence (DO_LAND_START)
     }
 
-    private fun landStart(): Int {
+    private fun landStart(): CommandResult {
         val index = ap.mission.landStartIndex() ?: return FAILED.also { refuse("No landing sequence found", Severity.WARNING) }
         if (!ap.flying) return FAILED
         ap.setMode(if (ap.isPx4) "AUTO.MISSION" else if (ap.multirotor) "AUTO_RTL" else "AUTO")
@@ -246,13 +250,13 @@ internal class Commands(private val ap: SimAutopilot) {
         return ACCEPTED
     }
 
-    private fun reposition(cmd: CommandRequest): Int {
+    private fun reposition(cmd: CommandRequest): CommandResult {
         if (!ap.isPx4 && !cmd.isInt) return UNSUPPORTED // ArduPilot takes DO_REPOSITION only as COMMAND_INT
         val changeMode = cmd.param2.toInt() and REPOSITION_FLAG_CHANGE_MODE != 0
         val guided = if (ap.isPx4) "AUTO.LOITER" else "GUIDED"
         if (!ap.isPx4 && ap.modeName != guided && !changeMode) return DENIED
-        val frame = cmd.frame ?: FRAME_GLOBAL
-        if (frame !in setOf(FRAME_GLOBAL, FRAME_GLOBAL_RELATIVE_ALT, FRAME_GLOBAL_INT, FRAME_GLOBAL_RELATIVE_ALT_INT, 10, 11)) return DENIED
+        val frame = cmd.frame ?: MavFrames.GLOBAL
+        if (!MavFrames.isGlobal(frame)) return DENIED
         val lat = cmd.latitude()
         val lon = cmd.longitude()
         if ((lat != null && lat !in -90.0..90.0) || (lon != null && lon !in -180.0..180.0)) return DENIED
@@ -261,7 +265,7 @@ internal class Commands(private val ap: SimAutopilot) {
         val here = ap.body.location
         val alt = when {
             !cmd.z.isFinite() -> here.altitude.meters
-            frame == FRAME_GLOBAL || frame == FRAME_GLOBAL_INT -> cmd.z.toDouble()
+            frame == MavFrames.GLOBAL || frame == MavFrames.GLOBAL_INT -> cmd.z.toDouble()
             else -> ap.home.altitude.meters + cmd.z
         }
         val target = Location(lat ?: here.latitude, lon ?: here.longitude, alt.m)
@@ -270,7 +274,7 @@ internal class Commands(private val ap: SimAutopilot) {
         return ACCEPTED
     }
 
-    private fun pauseContinue(cmd: CommandRequest): Int {
+    private fun pauseContinue(cmd: CommandRequest): CommandResult {
         if (ap.isPx4 || !ap.multirotor) return UNSUPPORTED // PX4 and ArduPlane: switch to Hold / LOITER instead
         return when (cmd.param1.toInt()) {
             0 -> {
@@ -287,7 +291,7 @@ internal class Commands(private val ap: SimAutopilot) {
         }
     }
 
-    private fun missionStart(cmd: CommandRequest): Int {
+    private fun missionStart(cmd: CommandRequest): CommandResult {
         if (ap.isPx4) {
             if (!ap.mission.hasMission()) return TEMPORARILY_REJECTED.also { refuse("Mission start denied! No valid mission") }
             val firstItem = cmd.param1.toInt()
@@ -305,7 +309,7 @@ internal class Commands(private val ap: SimAutopilot) {
         return if (modeResult("AUTO") == ACCEPTED) ACCEPTED else FAILED
     }
 
-    private fun setCurrent(cmd: CommandRequest): Int {
+    private fun setCurrent(cmd: CommandRequest): CommandResult {
         val seq = cmd.param1.toInt()
         if (seq !in 0 until ap.missionServer.list(pod.mavlink.mission.MissionType.MISSION).size) return DENIED
         ap.setCurrent(seq)
@@ -313,7 +317,7 @@ internal class Commands(private val ap: SimAutopilot) {
     }
 
     /** DO_CHANGE_SPEED: [kind] 0 air / 1 ground / 2 climb / 3 descent, [speed] m/s (-1 or less: unchanged). */
-    fun changeSpeed(kind: Int, speed: Double): Int {
+    fun changeSpeed(kind: Int, speed: Double): CommandResult {
         if (speed <= 0) return ACCEPTED
         when (kind) {
             0, 1 -> ap.cruiseOverride = speed
@@ -324,7 +328,7 @@ internal class Commands(private val ap: SimAutopilot) {
         return ACCEPTED
     }
 
-    private fun setHome(cmd: CommandRequest): Int {
+    private fun setHome(cmd: CommandRequest): CommandResult {
         if (cmd.param1.toInt() == 1) {
             ap.setHome(ap.body.location)
             return ACCEPTED
@@ -332,12 +336,12 @@ internal class Commands(private val ap: SimAutopilot) {
         val lat = cmd.latitude() ?: return FAILED
         val lon = cmd.longitude() ?: return FAILED
         if (lat !in -90.0..90.0 || lon !in -180.0..180.0 || (lat == 0.0 && lon == 0.0)) return FAILED
-        val alt = if (cmd.frame == FRAME_GLOBAL_RELATIVE_ALT || cmd.frame == FRAME_GLOBAL_RELATIVE_ALT_INT) ap.home.altitude.meters + cmd.z else cmd.z.toDouble()
+        val alt = if (cmd.frame == MavFrames.GLOBAL_RELATIVE_ALT || cmd.frame == MavFrames.GLOBAL_RELATIVE_ALT_INT) ap.home.altitude.meters + cmd.z else cmd.z.toDouble()
         ap.setHome(Location(lat, lon, alt.m))
         return ACCEPTED
     }
 
-    private fun calibrate(cmd: CommandRequest): Int {
+    private fun calibrate(cmd: CommandRequest): CommandResult {
         if (ap.armed || calibration != null) return TEMPORARILY_REJECTED
         val any = listOf(cmd.param1, cmd.param2, cmd.param3, cmd.param4, cmd.x.toFloat(), cmd.y.toFloat(), cmd.z).any { it != 0f }
         if (!any) return ACCEPTED
@@ -346,11 +350,6 @@ internal class Commands(private val ap: SimAutopilot) {
     }
 
     companion object {
-        const val SET_MODE_MESSAGE = 11
-        const val FRAME_GLOBAL = 0
-        const val FRAME_GLOBAL_RELATIVE_ALT = 3
-        const val FRAME_GLOBAL_INT = 5
-        const val FRAME_GLOBAL_RELATIVE_ALT_INT = 6
         const val CALIBRATION_SECONDS = 2.0
     }
 }

@@ -1,5 +1,6 @@
 package pod.sim.autopilot
 
+import pod.core.vehicle.Severity
 import kotlin.math.abs
 import kotlin.math.atan2
 import pod.core.units.Location

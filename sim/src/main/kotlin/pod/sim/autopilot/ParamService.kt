@@ -1,5 +1,7 @@
 package pod.sim.autopilot
 
+import pod.core.vehicle.Severity
+
 /**
  * The vehicle side of the parameter protocol. Reads answer with PARAM_VALUE; a list request sends
  * every parameter with its index and the count; a write answers with the value now stored. An

@@ -2,10 +2,10 @@ package pod.sim.autopilot
 
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleType
-import pod.sim.autopilot.ParamType.INT16
-import pod.sim.autopilot.ParamType.INT32
-import pod.sim.autopilot.ParamType.INT8
-import pod.sim.autopilot.ParamType.REAL32
+import pod.mavlink.param.ParamType.INT16
+import pod.mavlink.param.ParamType.INT32
+import pod.mavlink.param.ParamType.INT8
+import pod.mavlink.param.ParamType.REAL32
 
 /**
  * The parameters each simulated flavour carries: a realistic subset, with the real names, units

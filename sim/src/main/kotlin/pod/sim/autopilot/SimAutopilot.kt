@@ -1,5 +1,6 @@
 package pod.sim.autopilot
 
+import pod.core.vehicle.Severity
 import pod.core.units.Location
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.LandedState
@@ -124,7 +125,7 @@ internal class SimAutopilot(
         outbox += output
     }
 
-    internal fun text(severity: Int, text: String) = emit(SimOutput.Text(severity, text))
+    internal fun text(severity: Severity, text: String) = emit(SimOutput.Text(severity, text))
 
     /** A snapshot for telemetry. */
     fun state(): SimState = SimState(

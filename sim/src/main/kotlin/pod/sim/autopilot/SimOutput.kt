@@ -1,14 +1,16 @@
 package pod.sim.autopilot
 
+import pod.mavlink.command.CommandResult
+import pod.core.vehicle.Severity
 import pod.sim.PhotoEvent
 
 /** What the simulated autopilot wants sent, in order; the vehicle's coroutine glue encodes it. */
 internal sealed interface SimOutput {
     /** COMMAND_ACK to the sender of a command. */
-    data class Ack(val command: Int, val result: Int, val progress: Int, val targetSystem: Int, val targetComponent: Int) : SimOutput
+    data class Ack(val command: Int, val result: CommandResult, val progress: Int, val targetSystem: Int, val targetComponent: Int) : SimOutput
 
     /** STATUSTEXT with MAV_SEVERITY [severity]. */
-    data class Text(val severity: Int, val text: String) : SimOutput
+    data class Text(val severity: Severity, val text: String) : SimOutput
 
     /** MISSION_ITEM_REACHED. */
     data class ItemReached(val seq: Int) : SimOutput
@@ -24,23 +26,6 @@ internal sealed interface SimOutput {
 
     /** PARAM_VALUE for the parameter at [index]. */
     data class Param(val index: Int) : SimOutput
-}
-
-/** MAV_RESULT numbers. */
-internal object MavResult {
-    const val ACCEPTED = 0
-    const val TEMPORARILY_REJECTED = 1
-    const val DENIED = 2
-    const val UNSUPPORTED = 3
-    const val FAILED = 4
-    const val IN_PROGRESS = 5
-}
-
-/** MAV_SEVERITY numbers used here. */
-internal object Severity {
-    const val CRITICAL = 2
-    const val WARNING = 4
-    const val INFO = 6
 }
 
 /** A COMMAND_LONG or COMMAND_INT, normalised: [frame] is null for COMMAND_LONG. */

@@ -1,13 +1,8 @@
 package pod.sim.autopilot
 
 import pod.core.vehicle.Autopilot
+import pod.mavlink.param.ParamType
 import kotlin.math.roundToLong
-
-/** MAV_PARAM_TYPE of a parameter. */
-internal enum class ParamType(val mav: Int, val isInteger: Boolean, val lowest: Double = 0.0, val highest: Double = 0.0) {
-    UINT8(1, true, 0.0, 255.0), INT8(2, true, -128.0, 127.0), UINT16(3, true, 0.0, 65535.0), INT16(4, true, -32768.0, 32767.0),
-    UINT32(5, true, 0.0, 4294967295.0), INT32(6, true, -2147483648.0, 2147483647.0), REAL32(9, false),
-}
 
 /** One parameter: name, default, type, the range the simulator accepts, and whether it can be written. */
 internal data class ParamDef(
@@ -59,7 +54,7 @@ internal class SimParameters(private val autopilot: Autopilot, definitions: List
         if (def.readOnly) return ParamWrite.READ_ONLY
         if (!value.isFinite()) return ParamWrite.OUT_OF_RANGE
         if (autopilot == Autopilot.PX4 && (value < def.min || value > def.max)) return ParamWrite.OUT_OF_RANGE
-        val stored = if (def.type.isInteger) value.roundToLong().toDouble().coerceIn(def.type.lowest, def.type.highest) else value.toFloat().toDouble()
+        val stored = if (def.type.isInteger) value.roundToLong().toDouble().coerceIn(def.type.range!!) else value.toFloat().toDouble()
         values[i] = stored
         return ParamWrite.STORED
     }

@@ -1,5 +1,6 @@
 package pod.sim.autopilot
 
+import pod.core.vehicle.Severity
 import java.util.Locale
 import kotlin.math.atan
 import kotlin.math.cos

@@ -1,5 +1,6 @@
 package pod.sim.autopilot
 
+import pod.mavlink.command.CommandResult
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.collections.shouldContain
@@ -52,7 +53,7 @@ class ArduCopterMissionEndTest : StringSpec({
         val ap = autopilot(Autopilot.PX4, VehicleType.QUADROTOR)
         ap.load(listOf(item(22, alt = 10.0), item(16, 40.0, 0.0, 10.0), item(21, 40.0, 0.0, 0.0)))
         ap.run(2.5)
-        ap.command(CommandRequest(300)) shouldBe MavResult.ACCEPTED
+        ap.command(CommandRequest(300)) shouldBe CommandResult.ACCEPTED
         val outputs = ArrayList<SimOutput>()
         ap.runUntil(300.0, check = { outputs += it.drain() }) { it.reached.size == 3 }
         outputs.filterIsInstance<SimOutput.ItemReached>().map { it.seq } shouldBe listOf(0, 1, 2)

@@ -1,5 +1,6 @@
 package pod.sim.autopilot
 
+import pod.mavlink.command.CommandResult
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.collections.shouldContainInOrder
 import io.kotest.matchers.doubles.plusOrMinus
@@ -28,10 +29,10 @@ class MissionFlightTest : StringSpec({
     "an ArduCopter flies take-off, five waypoints, two loiter turns and RTL in order and ends landed and disarmed at home" {
         val ap = autopilot()
         ap.load(listOf(homeItem()) + survey())
-        ap.mode("GUIDED") shouldBe MavResult.ACCEPTED
+        ap.mode("GUIDED") shouldBe CommandResult.ACCEPTED
         ap.run(2.5)
-        ap.armCommand() shouldBe MavResult.ACCEPTED
-        ap.command(CommandRequest(300)) shouldBe MavResult.ACCEPTED
+        ap.armCommand() shouldBe CommandResult.ACCEPTED
+        ap.command(CommandRequest(300)) shouldBe CommandResult.ACCEPTED
         ap.modeName shouldBe "AUTO"
         var highest = 0.0
         ap.runUntil(900.0, check = { highest = maxOf(highest, it.body.location.altitude.meters) }) { !it.armed && it.reached.size == 8 }
@@ -46,7 +47,7 @@ class MissionFlightTest : StringSpec({
         val ap = autopilot(Autopilot.PX4)
         ap.load(survey())
         ap.run(2.5)
-        ap.command(CommandRequest(300)) shouldBe MavResult.ACCEPTED
+        ap.command(CommandRequest(300)) shouldBe CommandResult.ACCEPTED
         ap.armed shouldBe true
         ap.modeName shouldBe "AUTO.MISSION"
         ap.runUntil(1500.0) { !it.armed && it.reached.size == 8 }
@@ -70,8 +71,8 @@ class MissionFlightTest : StringSpec({
             ),
         )
         ap.run(2.5)
-        ap.armCommand() shouldBe MavResult.ACCEPTED
-        ap.command(CommandRequest(300)) shouldBe MavResult.ACCEPTED
+        ap.armCommand() shouldBe CommandResult.ACCEPTED
+        ap.command(CommandRequest(300)) shouldBe CommandResult.ACCEPTED
         var minAirspeedInAir = Double.MAX_VALUE
         ap.runUntil(900.0, check = { if (!it.body.onGround) minAirspeedInAir = minOf(minAirspeedInAir, it.body.airspeed) }) { !it.armed }
         ap.reached shouldBe listOf(1, 2, 3, 5, 6)
@@ -147,7 +148,7 @@ class MissionFlightTest : StringSpec({
         ap.armCommand()
         ap.command(CommandRequest(300))
         ap.runUntil(120.0) { it.missionServer.current == 2 && pod.sim.flight.northEast(HOME, it.body.location).first > 60 }
-        ap.command(CommandRequest(193, param1 = 0f)) shouldBe MavResult.ACCEPTED
+        ap.command(CommandRequest(193, param1 = 0f)) shouldBe CommandResult.ACCEPTED
         ap.run(10.0)
         val held = ap.body.location
         ap.run(20.0) {
@@ -155,7 +156,7 @@ class MissionFlightTest : StringSpec({
             it.body.location.altitude.meters - HOME.altitude.meters shouldBe (20.0 plusOrMinus 0.3)
             it.missionServer.current shouldBe 2
         }
-        ap.command(CommandRequest(193, param1 = 1f)) shouldBe MavResult.ACCEPTED
+        ap.command(CommandRequest(193, param1 = 1f)) shouldBe CommandResult.ACCEPTED
         ap.runUntil(300.0) { !it.armed }
         ap.reached shouldBe listOf(1, 2) // and the final NAV_LAND, which ArduCopter does not report reached
         horizontalDistance(ap.body.location, HOME.offset(north = pod.core.units.Distance(200.0), east = pod.core.units.Distance(0.0))) shouldBeLessThan 2.0

@@ -1,5 +1,6 @@
 package pod.sim.autopilot
 
+import pod.mavlink.command.CommandResult
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.doubles.plusOrMinus
 import io.kotest.matchers.doubles.shouldBeGreaterThan
@@ -19,9 +20,9 @@ class NoPilotInputTest : StringSpec({
     fun hovering(): SimAutopilot {
         val ap = autopilot()
         ap.run(2.5)
-        ap.mode("GUIDED") shouldBe MavResult.ACCEPTED
-        ap.armCommand() shouldBe MavResult.ACCEPTED
-        ap.command(CommandRequest(22, z = 20f)) shouldBe MavResult.ACCEPTED
+        ap.mode("GUIDED") shouldBe CommandResult.ACCEPTED
+        ap.armCommand() shouldBe CommandResult.ACCEPTED
+        ap.command(CommandRequest(22, z = 20f)) shouldBe CommandResult.ACCEPTED
         ap.runUntil(30.0) { it.activity is Activity.Hold }
         ap.run(2.0)
         return ap
@@ -33,7 +34,7 @@ class NoPilotInputTest : StringSpec({
         "ArduCopter $mode with the throttle stick at minimum descends at PILOT_SPEED_UP (PILOT_SPEED_DN 0), lands where it is and disarms" {
             val ap = hovering()
             val where = ap.body.location
-            ap.mode(mode) shouldBe MavResult.ACCEPTED
+            ap.mode(mode) shouldBe CommandResult.ACCEPTED
             var fastest = 0.0
             ap.runUntil(30.0, check = { fastest = maxOf(fastest, it.body.velocityDown) }) { it.body.onGround }
             fastest shouldBe (2.5 plusOrMinus 0.01) // PILOT_SPEED_UP default 250 cm/s
@@ -61,7 +62,7 @@ class NoPilotInputTest : StringSpec({
             val ap = hovering()
             ap.mode("AUTO") // no mission: refused, stays in GUIDED
             val where = ap.body.location
-            ap.mode(mode) shouldBe MavResult.ACCEPTED
+            ap.mode(mode) shouldBe CommandResult.ACCEPTED
             ap.run(60.0) {
                 it.height() shouldBe (20.0 plusOrMinus 0.3)
                 horizontalDistance(it.body.location, where) shouldBeLessThan 1.0
@@ -72,7 +73,7 @@ class NoPilotInputTest : StringSpec({
 
     "ArduCopter STABILIZE with the throttle at minimum drops" {
         val ap = hovering()
-        ap.mode("STABILIZE") shouldBe MavResult.ACCEPTED
+        ap.mode("STABILIZE") shouldBe CommandResult.ACCEPTED
         ap.run(1.5)
         ap.body.velocityDown shouldBeGreaterThan 5.0
         ap.runUntil(10.0) { it.body.onGround }
@@ -82,8 +83,8 @@ class NoPilotInputTest : StringSpec({
         val ap = autopilot()
         ap.run(2.5)
         ap.mode("LOITER")
-        ap.armCommand() shouldBe MavResult.ACCEPTED
-        ap.command(CommandRequest(22, z = 10f)) shouldBe MavResult.ACCEPTED
+        ap.armCommand() shouldBe CommandResult.ACCEPTED
+        ap.command(CommandRequest(22, z = 10f)) shouldBe CommandResult.ACCEPTED
         ap.runUntil(20.0) { it.height() > 9.5 }
         ap.runUntil(20.0) { it.body.onGround }
     }

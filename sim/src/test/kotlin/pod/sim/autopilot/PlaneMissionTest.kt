@@ -1,5 +1,6 @@
 package pod.sim.autopilot
 
+import pod.mavlink.command.CommandResult
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.collections.shouldContain
 import io.kotest.matchers.doubles.shouldBeGreaterThan
@@ -21,8 +22,8 @@ class PlaneMissionTest : StringSpec({
     /** Flies [items] from take-off to touchdown; returns where the plane stopped. */
     fun SimAutopilot.flyToTouchdown(items: List<pod.mavlink.mission.MissionItem>, texts: MutableList<String>) {
         load(listOf(homeItem()) + items)
-        armCommand() shouldBe MavResult.ACCEPTED
-        command(CommandRequest(300)) shouldBe MavResult.ACCEPTED
+        armCommand() shouldBe CommandResult.ACCEPTED
+        command(CommandRequest(300)) shouldBe CommandResult.ACCEPTED
         runUntil(900.0, check = { texts += it.texts() }) { it.body.onGround && it.body.airspeed < 0.1 && it.time > 30 }
     }
 
@@ -30,16 +31,16 @@ class PlaneMissionTest : StringSpec({
         val ap = plane()
         ap.load(listOf(homeItem(), item(22, alt = 40.0), item(189, global = false), item(21, 300.0, 0.0, 0.0)))
         val out = ArrayList<SimOutput>()
-        ap.command(CommandRequest(400, param1 = 1f), out) shouldBe MavResult.FAILED
+        ap.command(CommandRequest(400, param1 = 1f), out) shouldBe CommandResult.FAILED
         out.filterIsInstance<SimOutput.Text>().map { it.text } shouldContain "Arm: DO_LAND_START set and RTL_AUTOLAND disabled"
         ap.params.set("RTL_AUTOLAND", 2.0)
-        ap.armCommand() shouldBe MavResult.ACCEPTED
+        ap.armCommand() shouldBe CommandResult.ACCEPTED
     }
 
     "ArduPlane arms a mission that lands without DO_LAND_START" {
         val ap = plane()
         ap.load(listOf(homeItem(), item(22, alt = 40.0), item(16, -350.0, 0.0, 30.0), item(21, 0.0, 0.0, 0.0)))
-        ap.armCommand() shouldBe MavResult.ACCEPTED
+        ap.armCommand() shouldBe CommandResult.ACCEPTED
     }
 
     "an ArduPlane landing from a waypoint straight over the land point glides steeply, flares high and touches down far past it" {
@@ -67,17 +68,17 @@ class PlaneMissionTest : StringSpec({
     "clearing the mission of an ArduPlane sitting in AUTO switches it to RTL, in which it will not arm" {
         val ap = plane()
         ap.load(listOf(homeItem(), item(22, alt = 40.0), item(16, 600.0, 0.0, 40.0)))
-        ap.mode("AUTO") shouldBe MavResult.ACCEPTED
+        ap.mode("AUTO") shouldBe CommandResult.ACCEPTED
         ap.missionServer.onMessage(MissionMessage.ClearAll(MissionType.MISSION), 0) shouldBe listOf(MissionMessage.Ack(MissionType.MISSION, MissionResult.ACCEPTED))
         ap.drain()
         ap.step(DT)
         ap.modeName shouldBe "RTL"
         ap.texts() shouldContain "Aircraft in auto without a running mission"
         val out = ArrayList<SimOutput>()
-        ap.command(CommandRequest(400, param1 = 1f), out) shouldBe MavResult.FAILED
+        ap.command(CommandRequest(400, param1 = 1f), out) shouldBe CommandResult.FAILED
         out.filterIsInstance<SimOutput.Text>().map { it.text } shouldContain "Arm: RTL mode not armable"
-        ap.mode("MANUAL") shouldBe MavResult.ACCEPTED
-        ap.armCommand() shouldBe MavResult.ACCEPTED
+        ap.mode("MANUAL") shouldBe CommandResult.ACCEPTED
+        ap.armCommand() shouldBe CommandResult.ACCEPTED
     }
 
     "ArduPilot refuses MISSION_CLEAR_ALL while armed and flying the mission in AUTO, and accepts it once out of AUTO" {
@@ -89,7 +90,7 @@ class PlaneMissionTest : StringSpec({
         val clear = MissionMessage.ClearAll(MissionType.MISSION)
         ap.missionServer.onMessage(clear, 0) shouldBe listOf(MissionMessage.Ack(MissionType.MISSION, MissionResult.ERROR))
         ap.missionServer.list(MissionType.MISSION).size shouldBe 4
-        ap.mode("LOITER") shouldBe MavResult.ACCEPTED
+        ap.mode("LOITER") shouldBe CommandResult.ACCEPTED
         ap.missionServer.onMessage(clear, 0) shouldBe listOf(MissionMessage.Ack(MissionType.MISSION, MissionResult.ACCEPTED))
         (ap.body.location.altitude.meters - HOME.altitude.meters) shouldBeGreaterThan 30.0
     }

@@ -1,5 +1,7 @@
 package pod.sim.autopilot
 
+import pod.mavlink.command.MavCommands
+import pod.mavlink.command.CommandResult
 import pod.core.units.Location
 import pod.core.units.m
 import pod.core.vehicle.Autopilot
@@ -43,21 +45,21 @@ internal fun SimAutopilot.run(seconds: Double, check: (SimAutopilot) -> Unit = {
 }
 
 /** Sends [cmd] and returns its COMMAND_ACK result (the others it queued stay readable via [outputs]). */
-internal fun SimAutopilot.command(cmd: CommandRequest, outputs: MutableList<SimOutput>? = null): Int {
+internal fun SimAutopilot.command(cmd: CommandRequest, outputs: MutableList<SimOutput>? = null): CommandResult {
     commands.handle(cmd)
     val out = drain()
     outputs?.addAll(out)
     return out.filterIsInstance<SimOutput.Ack>().last { it.command == cmd.command }.result
 }
 
-internal fun SimAutopilot.armCommand(): Int = command(CommandRequest(400, param1 = 1f))
+internal fun SimAutopilot.armCommand(): CommandResult = command(CommandRequest(MavCommands.COMPONENT_ARM_DISARM, param1 = 1f))
 
-internal fun SimAutopilot.mode(name: String): Int {
+internal fun SimAutopilot.mode(name: String): CommandResult {
     val custom = pod.mavlink.telemetry.FlightModes.customMode(autopilot, type, name)!!
     return if (isPx4) {
-        command(CommandRequest(176, param1 = 1f, param2 = ((custom shr 16) and 0xFF).toFloat(), param3 = ((custom shr 24) and 0xFF).toFloat()))
+        command(CommandRequest(MavCommands.DO_SET_MODE, param1 = 1f, param2 = ((custom shr 16) and 0xFF).toFloat(), param3 = ((custom shr 24) and 0xFF).toFloat()))
     } else {
-        command(CommandRequest(176, param1 = 1f, param2 = custom.toFloat()))
+        command(CommandRequest(MavCommands.DO_SET_MODE, param1 = 1f, param2 = custom.toFloat()))
     }
 }
 
