@@ -397,7 +397,13 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
                     seen = true
                     ok(value) || connection == ConnectionState.LOST || (untilDisarmed && !armed)
                 }
-        } ?: throw ActionNotConfirmed(action, expected, if (seen) describe(last as T) else "nothing", timeout)
+        } ?: run {
+            // The state can turn right at the deadline, after the check saw it but before `first`
+            // returned: what was seen last decides, not the race.
+            @Suppress("UNCHECKED_CAST")
+            if (seen && ok(last as T)) return
+            throw ActionNotConfirmed(action, expected, if (seen) describe(last as T) else "nothing", timeout)
+        }
         if (ok(outcome.first)) return
         if (outcome.second == ConnectionState.LOST) throw VehicleLost(vehicle.systemId, action)
         throw DisarmedDuring(vehicle.systemId, action, describe(outcome.first))
