@@ -7,7 +7,6 @@ import io.dronefleet.mavlink.minimal.MavType
 import io.dronefleet.mavlink.util.EnumValue
 import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.CoroutineScope
-import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.cancel
 import kotlinx.coroutines.delay
@@ -56,7 +55,7 @@ public class GroundStation private constructor(
 ) {
     internal val scope: CoroutineScope = CoroutineScope(
         parent.coroutineContext + SupervisorJob(parent.coroutineContext.job) +
-            Dispatchers.Default + CoroutineName("pod-gcs(${link.address})"),
+            config.timebase.dispatcher + CoroutineName("pod-gcs(${link.address})"),
     )
     private val encoder = FrameEncoder(codec)
     private val sequences = SequenceNumbers()

@@ -1,6 +1,7 @@
 package pod.mavlink
 
 import kotlin.time.Duration
+import pod.core.time.Timebase
 import kotlin.time.TimeSource
 import kotlin.time.Duration.Companion.seconds
 
@@ -47,9 +48,10 @@ public data class GroundStationConfig(
     public val maxPeers: Int = 1024,
     /**
      * The clock every time reading of the station and its vehicles' protocols goes through
-     * (heartbeat silence, exchange and readiness deadlines); a test can pass a virtual one.
+     * (heartbeat silence, exchange and readiness deadlines) and the dispatcher its coroutines run
+     * on, whose delays follow that clock; a test passes a virtual one.
      */
-    public val clock: TimeSource = TimeSource.Monotonic,
+    public val timebase: Timebase = Timebase.System,
 ) {
     init {
         require(systemId in 1..255) { "systemId must be in 1..255, was $systemId" }
@@ -62,6 +64,9 @@ public data class GroundStationConfig(
         require(maxPeers >= 1) { "maxPeers must be ≥ 1, was $maxPeers" }
         streamRates.forEach { (id, hz) -> require(hz > 0 && hz <= 1000) { "stream rate for message $id must be in (0, 1000] Hz, was $hz" } }
     }
+
+    /** [timebase]'s clock. */
+    public val clock: TimeSource get() = timebase.clock
 
     public companion object {
         /**

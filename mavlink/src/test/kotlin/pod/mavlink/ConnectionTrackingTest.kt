@@ -107,7 +107,7 @@ class ConnectionTrackingTest : StringSpec({
         coroutineScope {
             val clock = kotlin.time.TestTimeSource()
             val link = ScriptedLink { deliver -> deliver(peer(1), heartbeat(0)) }
-            val config = GroundStationConfig(lostAfter = 1.hours, streamRates = emptyMap(), requestHome = false, requestPayloads = false, clock = clock)
+            val config = GroundStationConfig(lostAfter = 1.hours, streamRates = emptyMap(), requestHome = false, requestPayloads = false, timebase = pod.core.time.Timebase(clock, kotlinx.coroutines.Dispatchers.Default))
             val gcs = GroundStation.open(link, this, config)
             try {
                 val found = withTimeout(5.seconds) { gcs.vehicles.first { 1 in it } }.getValue(1)

@@ -1,7 +1,5 @@
 package pod.mavlink.link
 
-import io.ktor.network.sockets.SocketAddress
-
 /**
  * A byte pipe to MAVLink peers: a UDP socket (listening or sending to one address) or a TCP
  * connection. It knows nothing of frames; [pod.mavlink.GroundStation] parses what it receives.
@@ -57,11 +55,17 @@ public interface MavlinkLink {
     }
 }
 
-/** One remote end of a link: where datagrams came from and where replies go. */
-public class LinkPeer internal constructor(internal val socketAddress: SocketAddress) {
-    override fun equals(other: Any?): Boolean = other is LinkPeer && other.socketAddress == socketAddress
+/**
+ * One remote end of a link: where datagrams came from and where replies go. Two peers are the
+ * same when their [address]es are equal.
+ */
+public class LinkPeer(
+    /** Where the peer is: a socket address for UDP and TCP, any value with equality for other links. */
+    public val address: Any,
+) {
+    override fun equals(other: Any?): Boolean = other is LinkPeer && other.address == address
 
-    override fun hashCode(): Int = socketAddress.hashCode()
+    override fun hashCode(): Int = address.hashCode()
 
-    override fun toString(): String = socketAddress.toString().removePrefix("/")
+    override fun toString(): String = address.toString().removePrefix("/")
 }

@@ -51,7 +51,7 @@ internal class UdpLink private constructor(
 
     override suspend fun send(bytes: ByteArray, peer: LinkPeer) {
         try {
-            socket.send(Datagram(buildPacket { writeFully(bytes) }, peer.socketAddress))
+            socket.send(Datagram(buildPacket { writeFully(bytes) }, peer.address as io.ktor.network.sockets.SocketAddress))
         } catch (e: SocketException) {
             // UDP gives no delivery guarantee anyway; a send to a vanished peer is a lost datagram.
         } catch (e: ClosedSendChannelException) {
