@@ -11,7 +11,7 @@ public class PickTimeout(
     public val matching: Int,
     /** How long it waited, in vehicle time. */
     public val waited: Duration,
-) : Exception("pick timed out after ${waited.toReadable()}: wanted ${request.describe()}, found $matching")
+) : pod.core.PodException("pick timed out after ${waited.toReadable()}: wanted ${request.describe()}, found $matching")
 
 /** A task asked for a vehicle that another running task holds; a vehicle is in at most one running task. */
 public class VehicleBusy(
@@ -21,16 +21,16 @@ public class VehicleBusy(
     public val wanted: String,
     /** The task that holds it. */
     public val heldBy: String,
-) : Exception("vehicle $vehicleId is busy with '$heldBy' and cannot run '$wanted'")
+) : pod.core.PodException("vehicle $vehicleId is busy with '$heldBy' and cannot run '$wanted'")
 
 /** A mission task was run without vehicles: bind it with `on`. */
 public class UnboundTask(
     /** The task's label. */
     public val task: String,
-) : Exception("task '$task' has no vehicles: bind it to a vehicle set with `on`")
+) : pod.core.PodException("task '$task' has no vehicles: bind it to a vehicle set with `on`")
 
 /** The program tried to release vehicles it had not picked. */
 public class NotPicked(
     /** The ids it had not picked. */
     public val vehicleIds: Set<Int>,
-) : Exception("vehicles $vehicleIds were not picked by this program")
+) : pod.core.PodException("vehicles $vehicleIds were not picked by this program")

@@ -61,4 +61,4 @@ public class VehicleLost(
     public val systemId: Int,
     /** What was going on when it was lost. */
     public val during: String,
-) : Exception("vehicle $systemId was lost (no heartbeat) during $during")
+) : pod.core.PodException("vehicle $systemId was lost (no heartbeat) during $during")

@@ -6,7 +6,7 @@ import pod.core.units.toReadable
 import kotlin.time.Duration
 
 /** An action the vehicle did not confirm. Command failures come as [pod.mavlink.command.CommandException]. */
-public sealed class ActionException(message: String) : Exception(message)
+public sealed class ActionException(message: String) : pod.core.PodException(message)
 
 /** [mode] is not a mode of [autopilot] flying [type]; [known] lists the ones that are. */
 public class UnknownMode(

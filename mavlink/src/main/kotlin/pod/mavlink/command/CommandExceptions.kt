@@ -4,7 +4,7 @@ import pod.core.units.toReadable
 import kotlin.time.Duration
 
 /** A command the vehicle did not carry out. */
-public sealed class CommandException(message: String) : Exception(message) {
+public sealed class CommandException(message: String) : pod.core.PodException(message) {
     /** The command that was sent. */
     public abstract val command: VehicleCommand
 }

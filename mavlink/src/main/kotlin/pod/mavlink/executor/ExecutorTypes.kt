@@ -53,7 +53,7 @@ public data class ExecutorTiming(
 }
 
 /** A mission a vehicle could not fly to its end. */
-public sealed class MissionExecutionException(message: String) : Exception(message) {
+public sealed class MissionExecutionException(message: String) : pod.core.PodException(message) {
     /** The mission's name. */
     public abstract val mission: String
 }

@@ -1,7 +1,7 @@
 package pod.mavlink.link
 
 /** A link could not be opened or broke; [message] says which link and why. */
-public open class LinkException(message: String, cause: Throwable? = null) : Exception(message, cause)
+public open class LinkException(message: String, cause: Throwable? = null) : pod.core.PodException(message, cause)
 
 /** A connection string that does not parse; [reason] says what was expected. */
 public class InvalidConnectionString(

@@ -4,7 +4,7 @@ import pod.core.units.toReadable
 import kotlin.time.Duration
 
 /** A mission transfer (upload, download, clear, set-current) that did not succeed. */
-public sealed class MissionException(message: String) : Exception(message) {
+public sealed class MissionException(message: String) : pod.core.PodException(message) {
     /** Which list the transfer concerned. */
     public abstract val type: MissionType
 }

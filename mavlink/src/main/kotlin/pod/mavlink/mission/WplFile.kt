@@ -16,7 +16,7 @@ public class WplFormatException(
     public val lineNumber: Int,
     /** Why the line was rejected, naming the column and the allowed range. */
     public val reason: String,
-) : IllegalArgumentException("WPL line $lineNumber: $reason")
+) : pod.core.PodException("WPL line $lineNumber: $reason")
 
 /**
  * Reads and writes mission, fence and rally lists as QGC WPL 110 text, the format of Mission Planner,

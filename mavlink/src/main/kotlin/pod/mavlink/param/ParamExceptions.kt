@@ -4,7 +4,7 @@ import pod.core.units.toReadable
 import kotlin.time.Duration
 
 /** A parameter could not be read or written. */
-public sealed class ParamException(message: String) : Exception(message) {
+public sealed class ParamException(message: String) : pod.core.PodException(message) {
     /** The parameter's name. */
     public abstract val name: String
 }

@@ -77,4 +77,4 @@ public object MissionReader {
 public class UnsupportedMissionItem(
     /** The item. */
     public val item: MissionItem,
-) : Exception("mission item ${item.seq} (MAV_CMD ${item.command}) is not a step Pod can read")
+) : pod.core.PodException("mission item ${item.seq} (MAV_CMD ${item.command}) is not a step Pod can read")
