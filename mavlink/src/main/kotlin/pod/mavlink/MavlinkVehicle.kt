@@ -96,6 +96,9 @@ public class MavlinkVehicle internal constructor(
      */
     public val payloads: StateFlow<Set<String>> = _payloads.asStateFlow()
 
+    /** Round-trip estimates every protocol exchange with this vehicle starts from and refines. */
+    internal val roundTrips: pod.mavlink.protocol.RoundTrips = pod.mavlink.protocol.RoundTrips()
+
     /** Upload, download and clear its mission, fence and rally lists. */
     public val mission: pod.mavlink.mission.MissionService = pod.mavlink.mission.MissionService(this)
 

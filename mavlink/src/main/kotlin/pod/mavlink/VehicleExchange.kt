@@ -1,55 +1,119 @@
 package pod.mavlink
 
-import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.CoroutineStart
+import kotlinx.coroutines.NonCancellable
 import kotlinx.coroutines.channels.Channel
-import kotlinx.coroutines.channels.ReceiveChannel
 import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
+import kotlinx.coroutines.selects.onTimeout
+import kotlinx.coroutines.selects.select
+import kotlinx.coroutines.withContext
+import kotlinx.coroutines.withTimeoutOrNull
 import pod.core.vehicle.ConnectionState
 import pod.core.vehicle.VehicleLost
+import pod.mavlink.protocol.Outcome
+import pod.mavlink.protocol.ProtocolMachine
+import pod.mavlink.protocol.Step
 import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.nanoseconds
 import kotlin.time.Duration.Companion.seconds
 
 /**
- * Runs one protocol exchange with this vehicle: [block] reads the messages [pick] keeps from
- * everything the vehicle sends, in order and without loss; the channel fails with [VehicleLost]
- * (naming [during]) as soon as the vehicle is marked lost. Listening starts before [block] runs,
- * so a reply to its first send cannot slip past.
- *
- * [block] calls [ExchangeWatch.sent] after each request it sends: once the vehicle has left the
- * exchange unanswered for [ExchangeWatch.QUIET], [MavlinkVehicle.awaiting] says so (with
- * [giveUpAfter], the silence after which the exchange fails) until an answer comes or it ends.
+ * How a protocol talks to a vehicle over MAVLink: what the exchange is called ([during], in
+ * [VehicleLost] and [MavlinkVehicle.awaiting]), which of the vehicle's messages it reads ([pick]:
+ * decoded and filtered, null to skip), how its messages go out ([encode]), and:
+ * - [giveUpAfter]: the silence after which it fails, shown in [Awaiting];
+ * - [isAnswer]: whether a picked message answers the exchange (the awaiting notice clears), or only
+ *   tells that the vehicle is alive;
+ * - [alsoFrom]: other inputs, fed in between the messages (the vehicle's joined status texts);
+ * - [onCancel]: what to tell the vehicle when the caller cancels the exchange.
  */
-internal suspend fun <T, R> MavlinkVehicle.exchange(
-    during: String,
-    pick: (InboundMessage) -> T?,
-    giveUpAfter: Duration? = null,
-    block: suspend CoroutineScope.(ReceiveChannel<T>, ExchangeWatch) -> R,
-): R = coroutineScope {
-    val inbox = Channel<T>(Channel.UNLIMITED)
-    val watch = ExchangeWatch(this@exchange, during, giveUpAfter)
+internal class Wire<I, O>(
+    val during: String,
+    val pick: (InboundMessage) -> I?,
+    val encode: (O) -> Any,
+    val giveUpAfter: Duration? = null,
+    val isAnswer: (I) -> Boolean = { true },
+    val alsoFrom: Flow<I>? = null,
+    val onCancel: List<O> = emptyList(),
+)
+
+/**
+ * Runs [machine] against this vehicle until it ends, and returns its result or throws its error:
+ * sends what each step says, waits for the vehicle's messages ([Wire.pick]) with the machine's
+ * timer, feeds what arrives, in order and without loss. Listening starts before the machine's
+ * first message goes out, so a quick reply cannot slip past. Fails with [VehicleLost] as soon as
+ * the vehicle is marked lost. Time is the station's clock ([MavlinkVehicle.clock]) and waits are
+ * the coroutine dispatcher's, so the whole exchange runs in virtual time under a test scheduler.
+ *
+ * [afterStep] is called after each step has been carried out (for progress). Cancelled, the
+ * driver sends [Wire.onCancel] within [CANCEL_SEND_LIMIT] before it rethrows.
+ */
+internal suspend fun <I, O, T> MavlinkVehicle.run(
+    machine: ProtocolMachine<I, O, T>,
+    wire: Wire<I, O>,
+    afterStep: () -> Unit = {},
+): T = coroutineScope {
+    val origin = clock.markNow()
+    fun now() = origin.elapsedNow().inWholeNanoseconds
+    val inbox = Channel<I>(Channel.UNLIMITED)
+    val watch = ExchangeWatch(this@run, wire.during, wire.giveUpAfter)
     val listening = launch(start = CoroutineStart.UNDISPATCHED) {
         messages.collect { inbound ->
-            pick(inbound)?.let {
-                watch.answered()
+            wire.pick(inbound)?.let {
+                if (wire.isAnswer(it)) watch.answered()
                 inbox.trySend(it)
             }
         }
     }
+    val also = wire.alsoFrom?.let { inputs -> launch(start = CoroutineStart.UNDISPATCHED) { inputs.collect { inbox.trySend(it) } } }
     val lost = launch(start = CoroutineStart.UNDISPATCHED) {
         connection.first { it == ConnectionState.LOST }
-        inbox.close(VehicleLost(systemId, during))
+        inbox.close(VehicleLost(systemId, wire.during))
     }
     try {
-        block(inbox, watch)
+        var wakeAt = Step.NEVER
+        var step = machine.start(now())
+        while (true) {
+            for (message in step.send) send(wire.encode(message))
+            if (step.send.isNotEmpty()) watch.sent()
+            if (step.wakeAt != Step.KEEP) wakeAt = step.wakeAt
+            afterStep()
+            when (val outcome = step.outcome) {
+                null -> Unit
+                is Outcome.Done -> return@coroutineScope outcome.value
+                is Outcome.Failed -> throw outcome.error
+            }
+            val timer = wakeAt
+            step = select {
+                inbox.onReceive { machine.onMessage(it, now()) }
+                if (timer != Step.NEVER) onTimeout((timer - now()).coerceAtLeast(0).nanoseconds) { machine.onTimer(now()) }
+            }
+        }
+        @Suppress("UNREACHABLE_CODE")
+        error("unreachable")
+    } catch (e: CancellationException) {
+        if (wire.onCancel.isNotEmpty()) {
+            // Bounded, so a stuck link cannot hold up the cancel.
+            withContext(NonCancellable) {
+                withTimeoutOrNull(CANCEL_SEND_LIMIT) { for (message in wire.onCancel) send(wire.encode(message)) }
+            }
+        }
+        throw e
     } finally {
         listening.cancel()
+        also?.cancel()
         lost.cancel()
         watch.ended()
     }
 }
+
+/** Longest wait to hand [Wire.onCancel] to the link. */
+private val CANCEL_SEND_LIMIT = 500.milliseconds
 
 /**
  * Tracks one exchange's silence for [MavlinkVehicle.awaiting]: requests sent since the vehicle

@@ -1,5 +1,8 @@
 package pod.mavlink.mission
 
+import pod.mavlink.protocol.Outcome
+import pod.mavlink.protocol.ProtocolMachine
+import pod.mavlink.protocol.Step
 import kotlin.time.Duration.Companion.nanoseconds
 
 /**
@@ -13,37 +16,44 @@ internal class MissionCommand private constructor(
     private val operation: String,
     private val awaited: String,
     private val timing: TransferTiming,
-    private val answer: (MissionMessage) -> TransferOutcome<Unit>?,
-) {
+    private val answer: (MissionMessage) -> Outcome<Unit>?,
+) : ProtocolMachine<MissionMessage, MissionMessage, Unit> {
     private val rtt = RoundTripEstimator(timing)
+
+    /** The clock reading of the event being handled: timers are set from it. */
+    private var at = 0L
+
+    private fun after(send: List<MissionMessage>): Step<MissionMessage, Nothing> = Step(send, at + rtt.timeoutNanos)
     private var timeouts = 0
     private var sentAt = 0L
     private var ended = false
 
-    fun start(now: Long): MissionStep<Unit> {
+    override fun start(now: Long): Step<MissionMessage, Unit> {
+        at = now
         sentAt = now
-        return MissionStep(listOf(request), rtt.timeoutNanos)
+        return after(listOf(request))
     }
 
-    fun onMessage(message: MissionMessage, now: Long): MissionStep<Unit> {
-        if (ended) return MissionStep.NOTHING
-        val outcome = answer(message) ?: return MissionStep.NOTHING
+    override fun onMessage(message: MissionMessage, now: Long): Step<MissionMessage, Unit> {
+        if (ended) return Step.NOTHING
+        val outcome = answer(message) ?: return Step.NOTHING
         ended = true
         if (timeouts == 0) rtt.sample(now - sentAt)
-        return MissionStep(timerNanos = MissionStep.NO_TIMER, outcome = outcome)
+        return Step(wakeAt = Step.NEVER, outcome = outcome)
     }
 
-    fun onTimeout(): MissionStep<Unit> {
-        if (ended) return MissionStep.NOTHING
+    override fun onTimer(now: Long): Step<MissionMessage, Unit> {
+        at = now
+        if (ended) return Step.NOTHING
         if (++timeouts > timing.retries) {
             ended = true
-            return MissionStep(
-                timerNanos = MissionStep.NO_TIMER,
-                outcome = TransferOutcome.Failed(MissionTimeout(type, timing.retries, rtt.timeoutNanos.nanoseconds, awaited, operation)),
+            return Step(
+                wakeAt = Step.NEVER,
+                outcome = Outcome.Failed(MissionTimeout(type, timing.retries, rtt.timeoutNanos.nanoseconds, awaited, operation)),
             )
         }
         rtt.backOff()
-        return MissionStep(listOf(request), rtt.timeoutNanos)
+        return after(listOf(request))
     }
 
     companion object {
@@ -53,14 +63,14 @@ internal class MissionCommand private constructor(
         ) { reply ->
             when {
                 reply !is MissionMessage.Ack || reply.type != type -> null
-                reply.result == MissionResult.ACCEPTED -> TransferOutcome.Done(Unit)
-                else -> TransferOutcome.Failed(MissionRejected(type, reply.result, null, "clear"))
+                reply.result == MissionResult.ACCEPTED -> Outcome.Done(Unit)
+                else -> Outcome.Failed(MissionRejected(type, reply.result, null, "clear"))
             }
         }
 
         /** MISSION_SET_CURRENT [seq], done when MISSION_CURRENT reports it. */
         fun setCurrent(seq: Int, timing: TransferTiming) = MissionCommand(
             MissionType.MISSION, MissionMessage.SetCurrent(seq), "set-current", "MISSION_CURRENT with seq $seq", timing,
-        ) { reply -> if (reply is MissionMessage.Current && reply.seq == seq) TransferOutcome.Done(Unit) else null }
+        ) { reply -> if (reply is MissionMessage.Current && reply.seq == seq) Outcome.Done(Unit) else null }
     }
 }

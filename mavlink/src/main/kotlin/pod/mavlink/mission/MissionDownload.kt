@@ -1,5 +1,8 @@
 package pod.mavlink.mission
 
+import pod.mavlink.protocol.Outcome
+import pod.mavlink.protocol.ProtocolMachine
+import pod.mavlink.protocol.Step
 import kotlin.time.Duration.Companion.nanoseconds
 
 /**
@@ -30,7 +33,12 @@ internal class MissionDownload(
     /** Start as for a vehicle that serves downloads only in order (PX4); otherwise it is learned. */
     inOrder: Boolean = false,
     private val rtt: RoundTripEstimator = RoundTripEstimator(timing),
-) {
+) : ProtocolMachine<MissionMessage, MissionMessage, List<MissionItem>> {
+    /** The clock reading of the event being handled: timers are set from it. */
+    private var at = 0L
+
+    private fun after(send: List<MissionMessage>): Step<MissionMessage, Nothing> = Step(send, at + rtt.timeoutNanos)
+
     private enum class Phase { LISTING, RECEIVING, ENDED }
 
     private var phase = Phase.LISTING
@@ -54,30 +62,35 @@ internal class MissionDownload(
 
     val progress: TransferProgress get() = TransferProgress(receivedCount, received.size)
 
-    fun start(): MissionStep<List<MissionItem>> = MissionStep(listOf(MissionMessage.RequestList(type)), rtt.timeoutNanos)
+    override fun start(now: Long): Step<MissionMessage, List<MissionItem>> {
+        at = now
+        return after(listOf(MissionMessage.RequestList(type)))
+    }
 
-    fun onMessage(message: MissionMessage, now: Long): MissionStep<List<MissionItem>> {
-        if (phase == Phase.ENDED) return MissionStep.NOTHING
+    override fun onMessage(message: MissionMessage, now: Long): Step<MissionMessage, List<MissionItem>> {
+        at = now
+        if (phase == Phase.ENDED) return Step.NOTHING
         return when (message) {
-            is MissionMessage.Count -> if (message.type == type && phase == Phase.LISTING) onCount(message.count, now) else MissionStep.NOTHING
-            is MissionMessage.Item -> if (message.item.missionType == type && phase == Phase.RECEIVING) onItem(message.item, now) else MissionStep.NOTHING
-            is MissionMessage.Ack -> if (message.type == type) onAck(message.result) else MissionStep.NOTHING
-            else -> MissionStep.NOTHING
+            is MissionMessage.Count -> if (message.type == type && phase == Phase.LISTING) onCount(message.count, now) else Step.NOTHING
+            is MissionMessage.Item -> if (message.item.missionType == type && phase == Phase.RECEIVING) onItem(message.item, now) else Step.NOTHING
+            is MissionMessage.Ack -> if (message.type == type) onAck(message.result) else Step.NOTHING
+            else -> Step.NOTHING
         }
     }
 
     private var lastProgressAt = Long.MIN_VALUE
 
-    fun onTimeout(now: Long): MissionStep<List<MissionItem>> {
-        if (phase == Phase.ENDED) return MissionStep.NOTHING
+    override fun onTimer(now: Long): Step<MissionMessage, List<MissionItem>> {
+        at = now
+        if (phase == Phase.ENDED) return Step.NOTHING
         if (lastProgressAt == Long.MIN_VALUE) lastProgressAt = now
         timeoutsInARow++
         if (timeoutsInARow > timing.retries && now - lastProgressAt >= timing.patience.inWholeNanoseconds) {
             val waitingFor = if (phase == Phase.LISTING) "the item count" else "item ${received.indexOfFirst { it == null }}"
-            return end(TransferOutcome.Failed(MissionTimeout(type, timing.retries, rtt.timeoutNanos.nanoseconds, waitingFor, "download")))
+            return end(Outcome.Failed(MissionTimeout(type, timing.retries, rtt.timeoutNanos.nanoseconds, waitingFor, "download")))
         }
         rtt.backOff()
-        if (phase == Phase.LISTING) return MissionStep(listOf(MissionMessage.RequestList(type)), rtt.timeoutNanos)
+        if (phase == Phase.LISTING) return after(listOf(MissionMessage.RequestList(type)))
         // A vehicle that stopped answering mid-download may have dropped the transfer (PX4 does after
         // an out-of-turn request whose ERROR we never saw): start it over, one item at a time.
         // Long silence from an in-order vehicle: it has probably dropped the transfer (after an ERROR
@@ -102,13 +115,13 @@ internal class MissionDownload(
             requestedAt.fill(0L)
             inFlight = 0
             cursor = lowestMissing
-            return MissionStep(fill(now), rtt.timeoutNanos)
+            return after(fill(now))
         }
         if (sequentialRetry) {
-            if (cursor >= received.size) return MissionStep(timerNanos = rtt.timeoutNanos)
+            if (cursor >= received.size) return after(emptyList())
             requestedAt[cursor] = RETRANSMITTED
             inFlight = 1
-            return MissionStep(listOf(MissionMessage.Request(type, cursor)), rtt.timeoutNanos)
+            return after(listOf(MissionMessage.Request(type, cursor)))
         }
         // Everything in flight is overdue (the timer runs for the oldest request). Shrink the window
         // when most of it was lost, then ask again for what is missing, in order.
@@ -126,10 +139,10 @@ internal class MissionDownload(
                 }
             }
         }
-        return MissionStep(again + fill(now), rtt.timeoutNanos)
+        return after(again + fill(now))
     }
 
-    private fun onCount(count: Int, now: Long): MissionStep<List<MissionItem>> {
+    private fun onCount(count: Int, now: Long): Step<MissionMessage, List<MissionItem>> {
         lastProgressAt = now
         rtt.progressed()
         timeoutsInARow = 0
@@ -143,12 +156,12 @@ internal class MissionDownload(
         phase = Phase.RECEIVING
         inFlight = 0
         requestedAt.fill(0L)
-        return MissionStep(fill(now), rtt.timeoutNanos)
+        return after(fill(now))
     }
 
-    private fun onItem(item: MissionItem, now: Long): MissionStep<List<MissionItem>> {
+    private fun onItem(item: MissionItem, now: Long): Step<MissionMessage, List<MissionItem>> {
         val seq = item.seq
-        if (seq !in received.indices) return MissionStep.NOTHING
+        if (seq !in received.indices) return Step.NOTHING
         if (sequentialRetry && seq == cursor) {
             cursor++
             lastProgressAt = now
@@ -156,9 +169,9 @@ internal class MissionDownload(
             if (requestedAt[seq] != 0L) inFlight--
             requestedAt[seq] = 0L
             timeoutsInARow = 0
-            if (received[seq] != null) return MissionStep(fill(now), rtt.timeoutNanos)
+            if (received[seq] != null) return after(fill(now))
         } else if (received[seq] != null) {
-            return MissionStep.NOTHING // a duplicate
+            return Step.NOTHING // a duplicate
         }
         if (seq > lowestMissing) aheadSeen = true
         if (requestedAt[seq] > 0L) rtt.sample(now - requestedAt[seq])
@@ -175,7 +188,7 @@ internal class MissionDownload(
             answeredSinceResize = 0
         }
         if (receivedCount == received.size) return finish()
-        return MissionStep(fill(now), rtt.timeoutNanos)
+        return after(fill(now))
     }
 
     /**
@@ -183,22 +196,22 @@ internal class MissionDownload(
      * and ArduPilot answers an out-of-range request with INVALID_SEQUENCE. Only an in-order vehicle's
      * ERROR mid-download means this transfer ended; DENIED (busy with another upload) always counts.
      */
-    private fun onAck(result: MissionResult): MissionStep<List<MissionItem>> = when {
-        result == MissionResult.ACCEPTED -> MissionStep.NOTHING
-        result == MissionResult.DENIED -> end(TransferOutcome.Failed(MissionRejected(type, result, null, "download")))
+    private fun onAck(result: MissionResult): Step<MissionMessage, List<MissionItem>> = when {
+        result == MissionResult.ACCEPTED -> Step.NOTHING
+        result == MissionResult.DENIED -> end(Outcome.Failed(MissionRejected(type, result, null, "download")))
         // PX4 ends a download it was asked out of turn with ERROR: from now on, in order.
         (inOrder || result == MissionResult.ERROR) && phase == Phase.RECEIVING -> onError(result)
-        else -> MissionStep.NOTHING
+        else -> Step.NOTHING
     }
 
-    private fun onError(result: MissionResult): MissionStep<List<MissionItem>> {
+    private fun onError(result: MissionResult): Step<MissionMessage, List<MissionItem>> {
         if (phase == Phase.RECEIVING && restarts < MAX_RESTARTS) {
             // A vehicle that serves requests only in order (or lost track): start over, one item at a time.
             inOrder = true
             strict = true
             return restart()
         }
-        return end(TransferOutcome.Failed(MissionRejected(type, result, received.indexOfFirst { it == null }.takeIf { it >= 0 }, "download")))
+        return end(Outcome.Failed(MissionRejected(type, result, received.indexOfFirst { it == null }.takeIf { it >= 0 }, "download")))
     }
 
     /**
@@ -206,7 +219,7 @@ internal class MissionDownload(
      * out of turn, the walk goes from item 0 again, items already held included, because a vehicle
      * that serves in order (PX4) accepts nothing else; otherwise it resumes at the first gap.
      */
-    private fun restart(): MissionStep<List<MissionItem>> {
+    private fun restart(): Step<MissionMessage, List<MissionItem>> {
         restarts++
         timeoutsInARow = 0 // a fresh streak: the restart itself is the answer to this one
         sequentialRetry = true
@@ -215,7 +228,7 @@ internal class MissionDownload(
         requestedAt.fill(0L)
         inFlight = 0
         cursor = if (strict) 0 else lowestMissing
-        return MissionStep(listOf(MissionMessage.RequestList(type)), rtt.timeoutNanos)
+        return after(listOf(MissionMessage.RequestList(type)))
     }
 
     /** Requests for missing items not in flight, lowest first, until the window is full. */
@@ -240,16 +253,16 @@ internal class MissionDownload(
         return requests
     }
 
-    private fun finish(): MissionStep<List<MissionItem>> {
+    private fun finish(): Step<MissionMessage, List<MissionItem>> {
         phase = Phase.ENDED
         @Suppress("UNCHECKED_CAST")
         val items = (received as Array<MissionItem>).toList()
-        return MissionStep(listOf(MissionMessage.Ack(type, MissionResult.ACCEPTED)), MissionStep.NO_TIMER, TransferOutcome.Done(items))
+        return Step(listOf(MissionMessage.Ack(type, MissionResult.ACCEPTED)), Step.NEVER, Outcome.Done(items))
     }
 
-    private fun end(outcome: TransferOutcome<List<MissionItem>>): MissionStep<List<MissionItem>> {
+    private fun end(outcome: Outcome<List<MissionItem>>): Step<MissionMessage, List<MissionItem>> {
         phase = Phase.ENDED
-        return MissionStep(timerNanos = MissionStep.NO_TIMER, outcome = outcome)
+        return Step(wakeAt = Step.NEVER, outcome = outcome)
     }
 
     private companion object {

@@ -1,24 +1,21 @@
 package pod.mavlink.mission
 
 import kotlinx.coroutines.CancellationException
-import kotlinx.coroutines.NonCancellable
 import kotlinx.coroutines.delay
-import kotlinx.coroutines.withTimeoutOrNull
 import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.channelFlow
-import kotlinx.coroutines.selects.onTimeout
-import kotlinx.coroutines.selects.select
+import kotlinx.coroutines.flow.conflate
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
-import kotlinx.coroutines.withContext
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleLost
+import pod.core.vehicle.VehicleType
 import pod.mavlink.MavlinkVehicle
-import pod.mavlink.exchange
 import pod.mavlink.MessageTargets
+import pod.mavlink.Wire
+import pod.mavlink.run
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.Duration.Companion.nanoseconds
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeMark
 
@@ -39,32 +36,25 @@ public class MissionService internal constructor(
     @Volatile private var servesInOrder = false
     private val appeared = vehicle.clock.markNow() // made with the vehicle, on its first heartbeat
     private val cancelledUploads = java.util.concurrent.ConcurrentHashMap<MissionType, TimeMark>()
-    private var roundTrip: RoundTripEstimator? = null
-    private var roundTripTiming: TransferTiming? = null
 
-    /** The round-trip estimate every transfer of this vehicle shares (anew when [timing] changed). */
-    private fun roundTrip(): RoundTripEstimator {
-        val current = timing
-        if (roundTripTiming != current) {
-            roundTrip = RoundTripEstimator(current)
-            roundTripTiming = current
-        }
-        return roundTrip!!.also { it.progressed() }
+    /**
+     * Uploads [items] as the vehicle's [type] list. When the vehicle's final acknowledgement never
+     * arrives, downloads the list back and succeeds only if the vehicle holds what was sent
+     * (ArduPilot's item 0, home, excepted); [uploading] does the same and reports progress.
+     */
+    public suspend fun upload(items: List<MissionItem>, type: MissionType = MissionType.MISSION) {
+        MissionValidation.check(type, items)
+        write(type, items, partialFrom = null) {}
     }
 
     /**
-     * Uploads [items] as the vehicle's [type] list, reporting progress to [onProgress]. When the
-     * vehicle's final acknowledgement never arrives, downloads the list back and succeeds only if
-     * the vehicle holds what was sent (ArduPilot's item 0, home, excepted).
+     * [upload] as a flow of progress: collecting it runs the upload; it completes when the vehicle
+     * holds the list (the last element then counts every item) and throws what [upload] throws.
      */
-    public suspend fun upload(
-        items: List<MissionItem>,
-        type: MissionType = MissionType.MISSION,
-        onProgress: (TransferProgress) -> Unit = {},
-    ) {
+    public fun uploading(items: List<MissionItem>, type: MissionType = MissionType.MISSION): Flow<TransferProgress> = channelFlow {
         MissionValidation.check(type, items)
-        write(type, items, partialFrom = null, onProgress)
-    }
+        write(type, items, partialFrom = null) { trySend(it) }
+    }.conflate()
 
     /**
      * Replaces items `items.first().seq` up to `items.last().seq` of the vehicle's [type] list and
@@ -73,41 +63,39 @@ public class MissionService internal constructor(
      * the request, so the call ends in [MissionTimeout] there. When the final acknowledgement never
      * arrives, the list is downloaded and the range compared, as for [upload].
      */
-    public suspend fun uploadPartial(
-        items: List<MissionItem>,
-        type: MissionType = MissionType.MISSION,
-        onProgress: (TransferProgress) -> Unit = {},
-    ) {
+    public suspend fun uploadPartial(items: List<MissionItem>, type: MissionType = MissionType.MISSION) {
         require(items.isNotEmpty()) { "a partial upload needs at least one item" }
         val first = items.first().seq
         require(first >= 0) { "the first item's seq must be ≥ 0, was $first" }
         MissionValidation.check(type, items, first)
-        write(type, items, first, onProgress)
+        write(type, items, first) {}
     }
 
     /**
-     * Runs an upload (whole list, or from [partialFrom] on); when the final acknowledgement never
-     * came, downloads the list and succeeds only if the written range holds what was sent.
+     * Runs an [UploadConfirm] (whole list, or from [partialFrom] on), reporting progress to
+     * [progress] after each step and once more at the end.
      */
-    private suspend fun write(type: MissionType, items: List<MissionItem>, partialFrom: Int?, onProgress: (TransferProgress) -> Unit) {
+    private suspend fun write(type: MissionType, items: List<MissionItem>, partialFrom: Int?, progress: (TransferProgress) -> Unit) {
         exclusive.withLock {
-            val outcome = try {
+            try {
                 untilServiceUp {
-                    val machine = MissionUpload(type, items, timing, roundTrip(), partialFrom)
-                    drive(type, cancellable = true, { machine.start() }, machine::onMessage, machine::onTimeout) {
-                        onProgress(machine.progress)
+                    val identity = vehicle.identity.value
+                    val machine = UploadConfirm(
+                        type, items, timing, vehicle.roundTrips.mission(timing), partialFrom,
+                        inOrder = inOrder(), ardupilot = identity.autopilot == Autopilot.ARDUPILOT,
+                        fixedWing = identity.type == VehicleType.FIXED_WING,
+                    )
+                    try {
+                        vehicle.run(machine, wire(type, cancellable = true)) { progress(machine.progress) }
+                    } finally {
+                        if (machine.check?.learnedInOrder == true) servesInOrder = true
                     }
                 }
             } catch (e: CancellationException) {
                 cancelledUploads[type] = vehicle.clock.markNow()
                 throw e
             }
-            if (outcome is TransferOutcome.AckMissing) {
-                val onBoard = downloadLocked(type) {}
-                val written = if (partialFrom == null) onBoard else onBoard.drop(partialFrom).take(items.size)
-                if (!sameList(type, written, items, homeFirst = (partialFrom ?: 0) == 0)) throw MissionNotConfirmed(type, onBoard)
-            }
-            onProgress(TransferProgress(items.size, items.size))
+            progress(TransferProgress(items.size, items.size))
         }
     }
 
@@ -135,13 +123,18 @@ public class MissionService internal constructor(
         }
     }
 
-    /** [upload] as a flow of progress: collecting it runs the upload; it completes when the vehicle holds the list. */
-    public fun uploading(items: List<MissionItem>, type: MissionType = MissionType.MISSION): Flow<TransferProgress> =
-        channelFlow { upload(items, type) { trySend(it) } }
+    /** Downloads the vehicle's [type] list; [downloading] does the same and reports progress. */
+    public suspend fun download(type: MissionType = MissionType.MISSION): List<MissionItem> =
+        exclusive.withLock { afterOwnCancel(type) { downloadLocked(type) {} } }
 
-    /** Downloads the vehicle's [type] list. */
-    public suspend fun download(type: MissionType = MissionType.MISSION, onProgress: (TransferProgress) -> Unit = {}): List<MissionItem> =
-        exclusive.withLock { afterOwnCancel(type) { downloadLocked(type, onProgress) } }
+    /**
+     * [download] as a flow of progress: collecting it runs the download; the last element carries
+     * the list ([TransferProgress.items]); errors are those of [download].
+     */
+    public fun downloading(type: MissionType = MissionType.MISSION): Flow<TransferProgress> = channelFlow {
+        val items = exclusive.withLock { afterOwnCancel(type) { downloadLocked(type) { trySend(it) } } }
+        send(TransferProgress(items.size, items.size, items))
+    }.conflate()
 
     /**
      * Runs [attempt] again while the vehicle answers DENIED within [ABANDONED_UPLOAD_HOLD] of an
@@ -151,114 +144,54 @@ public class MissionService internal constructor(
     private suspend fun <T> afterOwnCancel(type: MissionType, attempt: suspend () -> T): T =
         retryingRefusal(MissionResult.DENIED, { cancelledUploads[type]?.let { ABANDONED_UPLOAD_HOLD - it.elapsedNow() } ?: Duration.ZERO }, attempt)
 
-    /** [download] as a flow of progress; the list itself comes from [download]. */
-    public fun downloading(type: MissionType = MissionType.MISSION): Flow<TransferProgress> =
-        channelFlow { download(type) { trySend(it) } }
-
     /** Deletes the vehicle's [type] list. */
     public suspend fun clear(type: MissionType = MissionType.MISSION) {
-        exclusive.withLock {
-            val machine = MissionCommand.clear(type, timing)
-            drive(type, cancellable = false, machine::start, machine::onMessage, { machine.onTimeout() }) {}
-        }
+        exclusive.withLock { vehicle.run(MissionCommand.clear(type, timing), wire(type, cancellable = false)) }
     }
 
     /** Makes item [seq] of the mission the one the vehicle flies next. */
     public suspend fun setCurrent(seq: Int) {
         require(seq >= 0) { "seq must be ≥ 0, was $seq" }
-        exclusive.withLock {
-            val machine = MissionCommand.setCurrent(seq, timing)
-            drive(MissionType.MISSION, cancellable = false, machine::start, machine::onMessage, { machine.onTimeout() }) {}
-        }
+        exclusive.withLock { vehicle.run(MissionCommand.setCurrent(seq, timing), wire(MissionType.MISSION, cancellable = false)) }
     }
 
-    private suspend fun downloadLocked(type: MissionType, onProgress: (TransferProgress) -> Unit): List<MissionItem> {
-        // PX4 is known to serve in order; any other vehicle shows it (MAVSDK's vehicle side does),
-        // and what one download learned, the next starts from.
-        val machine = MissionDownload(type, timing, inOrder = servesInOrder || vehicle.identity.value.autopilot == Autopilot.PX4, roundTrip())
-        val outcome = try {
-            drive(type, cancellable = true, { machine.start() }, machine::onMessage, machine::onTimeout) { onProgress(machine.progress) }
+    // PX4 is known to serve in order; any other vehicle shows it (MAVSDK's vehicle side does), and
+    // what one download learned, the next starts from.
+    private fun inOrder() = servesInOrder || vehicle.identity.value.autopilot == Autopilot.PX4
+
+    private suspend fun downloadLocked(type: MissionType, progress: (TransferProgress) -> Unit): List<MissionItem> {
+        val machine = MissionDownload(type, timing, inOrder(), vehicle.roundTrips.mission(timing))
+        try {
+            return vehicle.run(machine, wire(type, cancellable = true)) { progress(machine.progress) }
         } finally {
             if (machine.learnedInOrder) servesInOrder = true
         }
-        @Suppress("UNCHECKED_CAST")
-        return (outcome as TransferOutcome.Done<List<MissionItem>>).value
-    }
-
-    private fun sameList(type: MissionType, onBoard: List<MissionItem>, sent: List<MissionItem>, homeFirst: Boolean = true): Boolean {
-        val identity = vehicle.identity.value
-        return MissionStorage.holds(
-            type, onBoard, sent, ardupilot = identity.autopilot == Autopilot.ARDUPILOT,
-            fixedWing = identity.type == pod.core.vehicle.VehicleType.FIXED_WING, homeFirst = homeFirst,
-        )
     }
 
     /**
-     * Runs one protocol machine against the vehicle: sends what it says, arms its timer, feeds it
-     * the vehicle's mission messages, until it reports an outcome. Returns Done or AckMissing;
-     * throws the error of Failed.
+     * The vehicle's mission messages (from its autopilot, addressed to us or to everyone), and ours
+     * encoded for it. A [cancellable] transfer tells the vehicle when the caller cancels, or it
+     * refuses the next transfer (DENIED) until its own timeout: PX4's MavlinkMissionManager (and
+     * MAVSDK) drop the transfer on MISSION_ACK OPERATION_CANCELLED; ArduPilot ignores it (see
+     * [afterOwnCancel]).
      */
-    private suspend fun <T> drive(
-        type: MissionType,
-        cancellable: Boolean,
-        start: (Long) -> MissionStep<T>,
-        onMessage: (MissionMessage, Long) -> MissionStep<T>,
-        onTimeout: (Long) -> MissionStep<T>,
-        afterEachStep: () -> Unit,
-    ): TransferOutcome<T> {
-        val clock = vehicle.clock.markNow()
-        fun now() = clock.elapsedNow().inWholeNanoseconds
+    private fun wire(type: MissionType, cancellable: Boolean): Wire<MissionMessage, MissionMessage> {
         val identity = vehicle.identity.value
         val ourSystem = vehicle.station.config.systemId
-        return vehicle.exchange("a ${type.name.lowercase()} transfer", pick = { inbound ->
-            val message = inbound.message
-            val target = message?.let { MessageTargets.targetSystem(it) }
-            when {
-                message == null || inbound.frame.componentId != identity.componentId -> null
-                target != null && target != 0 && target != ourSystem -> null // another ground station's exchange
-                else -> MissionWire.decode(message)
-            }
-        }) { inbox, watch ->
-            var deadline = Long.MAX_VALUE
-            var step = start(now())
-            try {
-                while (true) {
-                    for (message in step.send) vehicle.send(MissionWire.encode(message, identity.systemId, identity.componentId))
-                    if (step.send.isNotEmpty()) watch.sent()
-                    when (step.timerNanos) {
-                        MissionStep.KEEP_TIMER -> Unit
-                        MissionStep.NO_TIMER -> deadline = Long.MAX_VALUE
-                        else -> deadline = now() + step.timerNanos
-                    }
-                    afterEachStep()
-                    when (val outcome = step.outcome) {
-                        null -> Unit
-                        is TransferOutcome.Failed -> throw outcome.error
-                        else -> return@exchange outcome
-                    }
-                    val wait = deadline - now()
-                    step = select {
-                        inbox.onReceive { onMessage(it, now()) }
-                        if (deadline != Long.MAX_VALUE) onTimeout(wait.coerceAtLeast(0).nanoseconds) { onTimeout(now()) }
-                    }
+        return Wire(
+            during = "a ${type.name.lowercase()} transfer",
+            pick = { inbound ->
+                val message = inbound.message
+                val target = message?.let { MessageTargets.targetSystem(it) }
+                when {
+                    message == null || inbound.frame.componentId != identity.componentId -> null
+                    target != null && target != 0 && target != ourSystem -> null // another ground station's exchange
+                    else -> MissionWire.decode(message)
                 }
-                @Suppress("UNREACHABLE_CODE")
-                error("unreachable")
-            } catch (e: CancellationException) {
-                if (cancellable) {
-                    // Tell the vehicle, or it refuses the next transfer (DENIED) until its own timeout:
-                    // PX4's MavlinkMissionManager (and MAVSDK) drop the transfer on this MISSION_ACK;
-                    // ArduPilot ignores it (see afterOwnCancel). Bounded, so a stuck socket cannot
-                    // hold up the cancel.
-                    withContext(NonCancellable) {
-                        withTimeoutOrNull(CANCEL_SEND_LIMIT) {
-                            vehicle.send(MissionWire.encode(MissionMessage.Ack(type, MissionResult.OPERATION_CANCELLED), identity.systemId, identity.componentId))
-                        }
-                    }
-                }
-                throw e
-            }
-        }
+            },
+            encode = { MissionWire.encode(it, identity.systemId, identity.componentId) },
+            onCancel = if (cancellable) listOf(MissionMessage.Ack(type, MissionResult.OPERATION_CANCELLED)) else emptyList(),
+        )
     }
 
     private companion object {
@@ -267,8 +200,5 @@ public class MissionService internal constructor(
 
         /** How long after cancelling an upload a DENIED download is taken for the vehicle still holding it (ArduPilot: 8 s). */
         val ABANDONED_UPLOAD_HOLD = 10.seconds
-
-        /** Longest wait to hand the cancelling MISSION_ACK to the link. */
-        val CANCEL_SEND_LIMIT = 500.milliseconds
     }
 }

@@ -1,10 +1,13 @@
 package pod.mavlink.mission
 
+import pod.mavlink.protocol.Outcome
+import pod.mavlink.protocol.ProtocolMachine
+import pod.mavlink.protocol.Step
 import kotlin.time.Duration.Companion.nanoseconds
 
 /**
  * Ground-station side of an upload, as a pure state machine: feed it the vehicle's messages and
- * timer expiries with the driver's clock reading (nanoseconds), send what each [MissionStep] says.
+ * timer expiries with the driver's clock reading (nanoseconds), send what each [Step] says.
  *
  * The vehicle leads (MISSION_COUNT, then it requests each item); every request is answered with
  * MISSION_ITEM_INT, legacy MISSION_REQUEST included. Requests older than the newest are stale and
@@ -15,7 +18,7 @@ import kotlin.time.Duration.Companion.nanoseconds
  * answer an unexpected item harmlessly (ArduPilot with a non-final MISSION_ACK INVALID_SEQUENCE,
  * which is ignored here; PX4 silently). If the final MISSION_ACK does not come, the last item is
  * resent (PX4 and Pod's simulator then acknowledge again); when the budget runs out the outcome is
- * [TransferOutcome.AckMissing] and the driver finds out what the vehicle holds.
+ * [Outcome.Done(UploadEnd.ACK_MISSING)] and the driver finds out what the vehicle holds.
  */
 internal class MissionUpload(
     private val type: MissionType,
@@ -27,8 +30,13 @@ internal class MissionUpload(
      * write (MISSION_WRITE_PARTIAL_LIST, ArduPilot only), which replaces just those items.
      */
     private val partialFrom: Int? = null,
-) {
+) : ProtocolMachine<MissionMessage, MissionMessage, UploadEnd> {
     private val first = partialFrom ?: 0
+
+    /** The clock reading of the event being handled: timers are set from it. */
+    private var at = 0L
+
+    private fun after(send: List<MissionMessage>): Step<MissionMessage, Nothing> = Step(send, at + rtt.timeoutNanos)
 
     private enum class Phase { COUNTING, SENDING, AWAITING_ACK, ENDED }
 
@@ -50,41 +58,46 @@ internal class MissionUpload(
     val progress: TransferProgress
         get() = TransferProgress(if (accepted) items.size else newest.coerceAtLeast(0), items.size)
 
-    fun start(): MissionStep<Unit> = MissionStep(listOf(opening()), rtt.timeoutNanos)
+    override fun start(now: Long): Step<MissionMessage, UploadEnd> {
+        at = now
+        return after(listOf(opening()))
+    }
 
     private fun opening(): MissionMessage =
         if (partialFrom == null) MissionMessage.Count(type, items.size) else MissionMessage.WritePartial(type, first, first + items.size - 1)
 
-    fun onMessage(message: MissionMessage, now: Long): MissionStep<Unit> {
-        if (phase == Phase.ENDED) return MissionStep.NOTHING
+    override fun onMessage(message: MissionMessage, now: Long): Step<MissionMessage, UploadEnd> {
+        at = now
+        if (phase == Phase.ENDED) return Step.NOTHING
         if ((message is MissionMessage.Request && message.type == type) || (message is MissionMessage.Ack && message.type == type)) lastHeardAt = now
         return when (message) {
-            is MissionMessage.Request -> if (message.type == type) onRequest(message.seq - first, now) else MissionStep.NOTHING
-            is MissionMessage.Ack -> if (message.type == type) onAck(message.result, now) else MissionStep.NOTHING
-            else -> MissionStep.NOTHING
+            is MissionMessage.Request -> if (message.type == type) onRequest(message.seq - first, now) else Step.NOTHING
+            is MissionMessage.Ack -> if (message.type == type) onAck(message.result, now) else Step.NOTHING
+            else -> Step.NOTHING
         }
     }
 
     private var lastProgressAt = Long.MIN_VALUE
     private var lastHeardAt = Long.MIN_VALUE // anything from the vehicle about this list
 
-    fun onTimeout(now: Long): MissionStep<Unit> {
-        if (phase == Phase.ENDED) return MissionStep.NOTHING
+    override fun onTimer(now: Long): Step<MissionMessage, UploadEnd> {
+        at = now
+        if (phase == Phase.ENDED) return Step.NOTHING
         if (lastProgressAt == Long.MIN_VALUE) lastProgressAt = now
         timeoutsInARow++
         pendingError?.let { error ->
             // An error answer followed by silence: the vehicle meant it. Silence long enough for the
             // vehicle's own re-request timer (ArduPilot 1 s, PX4 250 ms), or its next request could
             // still be on the way after a loss.
-            if (timeoutsInARow >= 2 && now - pendingErrorAt >= ERROR_SILENCE_NANOS) return end(TransferOutcome.Failed(MissionRejected(type, error, newest.takeIf { it >= 0 }?.plus(first), "upload")))
+            if (timeoutsInARow >= 2 && now - pendingErrorAt >= ERROR_SILENCE_NANOS) return end(Outcome.Failed(MissionRejected(type, error, newest.takeIf { it >= 0 }?.plus(first), "upload")))
         }
         if (timeoutsInARow > timing.retries && now - lastProgressAt >= timing.patience.inWholeNanoseconds) {
             val waited = rtt.timeoutNanos.nanoseconds
             return end(
                 if (phase == Phase.AWAITING_ACK) {
-                    TransferOutcome.AckMissing
+                    Outcome.Done(UploadEnd.ACK_MISSING)
                 } else {
-                    TransferOutcome.Failed(
+                    Outcome.Failed(
                         MissionTimeout(type, timing.retries, waited, if (phase == Phase.COUNTING) "the first item request" else "a request for item ${first + newest + 1}", "upload"),
                     )
                 },
@@ -102,13 +115,13 @@ internal class MissionUpload(
             staleSeq = -1
             pendingError = null
             firstSentAt.fill(RETRANSMITTED)
-            return MissionStep(listOf(opening()), rtt.timeoutNanos)
+            return after(listOf(opening()))
         }
         if (phase == Phase.AWAITING_ACK && timeoutsInARow >= 6 && now - maxOf(lastProgressAt, lastHeardAt) >= QUIET_AFTER_LAST_NANOS) {
             // The last item went out again and again and nothing came back: ArduPilot would answer
             // ERROR and PX4 ACCEPTED to a repeat, but MAVSDK's vehicle side has finished and answers
             // nothing (its handlers are gone once it sent the ACK we lost). A download tells.
-            return end(TransferOutcome.AckMissing)
+            return end(Outcome.Done(UploadEnd.ACK_MISSING))
         }
         rtt.backOff()
         val resend = when (phase) {
@@ -117,7 +130,7 @@ internal class MissionUpload(
             Phase.AWAITING_ACK -> listOf(item(items.size - 1))
             Phase.ENDED -> emptyList()
         }
-        return MissionStep(resend, rtt.timeoutNanos)
+        return after(resend)
     }
 
     /**
@@ -135,8 +148,8 @@ internal class MissionUpload(
     }
 
     /** [seq] counts from the first item of this transfer (its index in [items]). */
-    private fun onRequest(seq: Int, now: Long): MissionStep<Unit> {
-        if (seq !in items.indices) return MissionStep.NOTHING
+    private fun onRequest(seq: Int, now: Long): Step<MissionMessage, UploadEnd> {
+        if (seq !in items.indices) return Step.NOTHING
         if (seq < newest) {
             // The vehicle is alive and in the upload, whatever it asks.
             timeoutsInARow = 0
@@ -145,13 +158,13 @@ internal class MissionUpload(
             // follow it back.
             if (seq != staleSeq && seq != 0) {
                 staleSeq = seq
-                return MissionStep(listOf(item(seq)))
+                return Step(listOf(item(seq)))
             }
             newest = seq
             staleSeq = -1
             timeoutsInARow = 0
             phase = Phase.SENDING
-            return MissionStep(listOf(item(seq)), rtt.timeoutNanos)
+            return after(listOf(item(seq)))
         }
         if (seq > newest) {
             pendingError = null
@@ -165,47 +178,47 @@ internal class MissionUpload(
         }
         firstSentAt[seq] = if (firstSentAt[seq] == UNSENT) now else RETRANSMITTED
         phase = if (seq == items.size - 1) Phase.AWAITING_ACK else Phase.SENDING
-        return MissionStep(listOf(item(seq)), rtt.timeoutNanos)
+        return after(listOf(item(seq)))
     }
 
-    private fun onAck(result: MissionResult, now: Long): MissionStep<Unit> = when {
+    private fun onAck(result: MissionResult, now: Long): Step<MissionMessage, UploadEnd> = when {
         // A stale ACCEPTED (from an earlier transfer) must not pass for this one: only once the
         // last item has gone out (asked for, or sent unasked after a lost request) can it be ours.
         result == MissionResult.ACCEPTED && (items.isEmpty() || lastItemSent) -> {
             accepted = true
-            end(TransferOutcome.Done(Unit))
+            end(Outcome.Done(UploadEnd.ACKNOWLEDGED))
         }
-        result == MissionResult.ACCEPTED -> MissionStep.NOTHING
+        result == MissionResult.ACCEPTED -> Step.NOTHING
         // ArduPilot's answer to an unexpected item; the transfer goes on.
-        result == MissionResult.INVALID_SEQUENCE -> MissionStep.NOTHING
+        result == MissionResult.INVALID_SEQUENCE -> Step.NOTHING
         // Once the last item is out, ERROR is what ArduPilot and PX4 answer to a late or repeated
         // item after they completed the upload: the outcome is unknown, not failed.
         // Ask once more (PX4 and Pod's simulator acknowledge a repeated last item again); ArduPilot
         // keeps answering ERROR, and then only a download can tell.
         result == MissionResult.ERROR && lastItemSent -> if (++errorsAfterLastItem >= 3) {
-            end(TransferOutcome.AckMissing)
+            end(Outcome.Done(UploadEnd.ACK_MISSING))
         } else {
             phase = Phase.AWAITING_ACK
-            MissionStep(listOf(item(items.size - 1)))
+            Step(listOf(item(items.size - 1)))
         }
         // PX4 answers a duplicated MISSION_COUNT with ERROR ("busy") and carries on: an ERROR only
-        // counts if the vehicle then falls silent (see onTimeout).
+        // counts if the vehicle then falls silent (see onTimer).
         result == MissionResult.ERROR && phase != Phase.COUNTING -> pending(result, now)
         // ArduPilot answers a repeated MISSION_WRITE_PARTIAL_LIST (ours, resent or duplicated on the
         // way) with DENIED while it serves the first one: only silence afterwards makes it count.
         result == MissionResult.DENIED && partialFrom != null -> pending(result, now)
-        else -> end(TransferOutcome.Failed(MissionRejected(type, result, newest.takeIf { it >= 0 }?.plus(first), "upload")))
+        else -> end(Outcome.Failed(MissionRejected(type, result, newest.takeIf { it >= 0 }?.plus(first), "upload")))
     }
 
-    private fun pending(error: MissionResult, now: Long): MissionStep<Unit> {
+    private fun pending(error: MissionResult, now: Long): Step<MissionMessage, UploadEnd> {
         if (pendingError == null) pendingErrorAt = now
         pendingError = error
-        return MissionStep.NOTHING
+        return Step.NOTHING
     }
 
-    private fun end(outcome: TransferOutcome<Unit>): MissionStep<Unit> {
+    private fun end(outcome: Outcome<UploadEnd>): Step<MissionMessage, UploadEnd> {
         phase = Phase.ENDED
-        return MissionStep(timerNanos = MissionStep.NO_TIMER, outcome = outcome)
+        return Step(wakeAt = Step.NEVER, outcome = outcome)
     }
 
     private fun item(seq: Int): MissionMessage.Item {
@@ -230,4 +243,13 @@ internal class MissionUpload(
         /** Silence after an ambiguous error answer before it counts: past ArduPilot's 1 s re-request. */
         const val ERROR_SILENCE_NANOS = 1_500_000_000L
     }
+}
+
+/** How an upload ended when it did not fail. */
+internal enum class UploadEnd {
+    /** The vehicle acknowledged the list with MISSION_ACK ACCEPTED. */
+    ACKNOWLEDGED,
+
+    /** Every item went out but the final MISSION_ACK never came: only a download can tell what the vehicle holds. */
+    ACK_MISSING,
 }

@@ -2,6 +2,9 @@ package pod.mavlink.param
 
 import pod.mavlink.command.CommandRoundTrip
 import pod.mavlink.command.CommandTiming
+import pod.mavlink.protocol.Outcome
+import pod.mavlink.protocol.ProtocolMachine
+import pod.mavlink.protocol.Step
 import kotlin.time.Duration.Companion.nanoseconds
 
 /**
@@ -18,9 +21,7 @@ internal class ParamExchange(
     private val type: ParamType?,
     private val timing: CommandTiming,
     private val roundTrip: CommandRoundTrip,
-) {
-    /** [send] = send the request now; [wakeAt] absolute; [result] or [error] at the end. */
-    data class Step(val send: Boolean = false, val wakeAt: Long = Long.MAX_VALUE, val result: Parameter? = null, val error: ParamException? = null)
+) : ProtocolMachine<Parameter, Unit, Parameter> {
 
     private var startedAt = 0L
     private var lastSentAt = 0L
@@ -30,24 +31,25 @@ internal class ParamExchange(
     private var wakeAt = Long.MAX_VALUE
     private var done = false
 
-    fun start(now: Long): Step {
+    override fun start(now: Long): Step<Unit, Parameter> {
         startedAt = now
         attemptTimeout = roundTrip.attemptTimeoutNanos
         return send(now)
     }
 
-    fun onValue(value: Parameter, now: Long): Step {
-        if (done || value.name != name) return Step(wakeAt = wakeAt)
+    override fun onMessage(message: Parameter, now: Long): Step<Unit, Parameter> {
+        val value = message
+        if (done || value.name != name) return Step.NOTHING
         if (attempts == 1) roundTrip.sample(now - lastSentAt)
-        if (writing == null || sameValue(value)) return finish(Step(result = value))
-        if (++mismatches >= 2) return finish(Step(error = ParamRejected(name, writing, value.value)))
+        if (writing == null || sameValue(value)) return finish(Outcome.Done(value))
+        if (++mismatches >= 2) return finish(Outcome.Failed(ParamRejected(name, writing, value.value)))
         return send(now)
     }
 
-    fun onTimer(now: Long): Step {
-        if (done || now < wakeAt) return Step(wakeAt = wakeAt)
+    override fun onTimer(now: Long): Step<Unit, Parameter> {
+        if (done || now < wakeAt) return Step.NOTHING
         if (now - startedAt >= timing.timeout.inWholeNanoseconds) {
-            return finish(Step(error = ParamTimeout(name, attempts, (now - startedAt).nanoseconds)))
+            return finish(Outcome.Failed(ParamTimeout(name, attempts, (now - startedAt).nanoseconds)))
         }
         attemptTimeout = (attemptTimeout * 3 / 2).coerceAtMost(timing.maxAttemptTimeout.inWholeNanoseconds)
         return send(now)
@@ -59,16 +61,16 @@ internal class ParamExchange(
         return if (kind.isInteger) value.value.toLong() == wanted.toLong() else value.value.toFloat() == wanted.toFloat()
     }
 
-    private fun send(now: Long): Step {
+    private fun send(now: Long): Step<Unit, Parameter> {
         attempts++
         lastSentAt = now
         wakeAt = minOf(now + attemptTimeout, startedAt + timing.timeout.inWholeNanoseconds)
-        return Step(send = true, wakeAt = wakeAt)
+        return Step(listOf(Unit), wakeAt)
     }
 
-    private fun finish(step: Step): Step {
+    private fun finish(outcome: Outcome<Parameter>): Step<Unit, Parameter> {
         done = true
         wakeAt = Long.MAX_VALUE
-        return step
+        return Step(wakeAt = Step.NEVER, outcome = outcome)
     }
 }

@@ -5,16 +5,13 @@ import io.dronefleet.mavlink.common.ParamRequestRead
 import io.dronefleet.mavlink.common.ParamSet
 import io.dronefleet.mavlink.common.ParamValue
 import io.dronefleet.mavlink.util.EnumValue
-import kotlinx.coroutines.selects.onTimeout
-import kotlinx.coroutines.selects.select
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
 import pod.core.vehicle.Autopilot
 import pod.mavlink.MavlinkVehicle
-import pod.mavlink.exchange
-import pod.mavlink.command.CommandRoundTrip
+import pod.mavlink.Wire
 import pod.mavlink.command.CommandTiming
-import kotlin.time.Duration.Companion.nanoseconds
+import pod.mavlink.run
 
 /**
  * Reads and writes one vehicle's parameters (PARAM_REQUEST_READ, PARAM_SET, answered by
@@ -29,8 +26,6 @@ public class ParamService internal constructor(
 ) {
     private val exclusive = Mutex()
     private val types = HashMap<String, ParamType>()
-    private var roundTrip: CommandRoundTrip? = null
-    private var roundTripTiming: CommandTiming? = null
 
     /** How this vehicle packs integers into PARAM_VALUE: by value on ArduPilot, bit for bit elsewhere. */
     public val encoding: ParamEncoding
@@ -63,45 +58,24 @@ public class ParamService internal constructor(
         Parameter.nameProblem(name)?.let { throw IllegalArgumentException(it) }
     }
 
-    private fun roundTrip(): CommandRoundTrip {
-        val current = timing
-        if (roundTripTiming != current) {
-            roundTrip = CommandRoundTrip(current)
-            roundTripTiming = current
-        }
-        return roundTrip!!
-    }
-
     private suspend fun exchange(name: String, writing: Double?, type: ParamType?): Parameter {
-        val clock = vehicle.clock.markNow()
-        fun now() = clock.elapsedNow().inWholeNanoseconds
         val identity = vehicle.identity.value
         val encoding = encoding
-        val machine = ParamExchange(name, writing, type, timing, roundTrip())
-        return vehicle.exchange("parameter $name", pick = { inbound ->
-            val message = inbound.message as? ParamValue
-            if (message == null || inbound.frame.componentId != identity.componentId) null else decode(message, encoding)
-        }, giveUpAfter = timing.timeout) { values, watch ->
-            var step = machine.start(now())
-            while (true) {
-                if (step.send) {
-                    vehicle.send(request(name, writing, type, encoding, identity.systemId, identity.componentId))
-                    watch.sent()
-                }
-                step.error?.let { throw it }
-                step.result?.let { result ->
-                    synchronized(types) { types[name] = result.type }
-                    return@exchange result
-                }
-                val wait = (step.wakeAt - now()).coerceAtLeast(0)
-                step = select {
-                    values.onReceive { machine.onValue(it, now()) }
-                    if (step.wakeAt != Long.MAX_VALUE) onTimeout(wait.nanoseconds) { machine.onTimer(now()) }
-                }
-            }
-            @Suppress("UNREACHABLE_CODE")
-            error("unreachable")
-        }
+        val machine = ParamExchange(name, writing, type, timing, vehicle.roundTrips.param(timing))
+        val result = vehicle.run(
+            machine,
+            Wire<Parameter, Unit>(
+                during = "parameter $name",
+                pick = { inbound ->
+                    val message = inbound.message as? ParamValue
+                    if (message == null || inbound.frame.componentId != identity.componentId) null else decode(message, encoding)
+                },
+                encode = { request(name, writing, type, encoding, identity.systemId, identity.componentId) },
+                giveUpAfter = timing.timeout,
+            ),
+        )
+        synchronized(types) { types[name] = result.type }
+        return result
     }
 
     private fun request(name: String, writing: Double?, type: ParamType?, encoding: ParamEncoding, system: Int, component: Int): Any =
