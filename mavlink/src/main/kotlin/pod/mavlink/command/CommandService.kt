@@ -43,8 +43,14 @@ public class CommandService internal constructor(
      * ([CommandProgress.reply]). The flow throws what [send] throws.
      */
     public fun sending(command: VehicleCommand): Flow<CommandProgress> = channelFlow {
-        val reply = lockFor(command.command).withLock { exchange(command) { trySend(CommandProgress(it, null)) } }
-        send(CommandProgress(reply.progress, reply))
+        var percent: Int? = null
+        val reply = lockFor(command.command).withLock {
+            exchange(command) {
+                percent = it
+                trySend(CommandProgress(it, null))
+            }
+        }
+        send(CommandProgress(reply.progress ?: percent, reply))
     }.buffer(Channel.UNLIMITED)
 
     private fun lockFor(command: Int): Mutex = synchronized(locks) { locks.getOrPut(command) { Mutex() } }

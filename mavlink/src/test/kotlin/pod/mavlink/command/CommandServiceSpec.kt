@@ -12,6 +12,7 @@ import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
+import kotlinx.coroutines.flow.toList
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.async
 import kotlinx.coroutines.awaitAll
@@ -107,7 +108,7 @@ class CommandServiceSpec : StringSpec({
         }
     }
 
-    "IN_PROGRESS reports progress until the final ACCEPTED, without resending" {
+    "IN_PROGRESS is a flow of progress ending with the final ACCEPTED, without resending" {
         withVehicle(answer = { m ->
             if (m !is CommandLong) emptyList() else listOf(
                 ack(241, CommandResult.IN_PROGRESS, 30),
@@ -115,9 +116,10 @@ class CommandServiceSpec : StringSpec({
                 ack(241, CommandResult.ACCEPTED),
             )
         }) { v, sim ->
-            val progress = mutableListOf<Int?>()
-            v.commands.send(VehicleCommand(241, param3 = 1f)) { progress += it }
-            progress shouldBe listOf(30, 60)
+            val progress = v.commands.sending(VehicleCommand(241, param3 = 1f)).toList()
+            progress.map { it.percent } shouldBe listOf(30, 60, 60)
+            progress.dropLast(1).all { it.reply == null } shouldBe true
+            progress.last().reply?.result shouldBe CommandResult.ACCEPTED
             sim.commands.value shouldBe listOf(241 to 0)
         }
     }

@@ -1,5 +1,7 @@
 package pod.mavlink.command
 
+import pod.mavlink.protocol.Outcome
+import pod.mavlink.protocol.Step
 import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.collections.shouldContainExactly
@@ -16,6 +18,12 @@ private val MS = 1.milliseconds.inWholeNanoseconds
 private fun transaction(timing: CommandTiming = CommandTiming()) =
     CommandTransaction(VehicleCommand(ARM, param1 = 1f), timing, CommandRoundTrip(timing))
 
+/** The confirmation number a step sends the command with, or -1 when it sends nothing. */
+private val Step<Int, CommandReply>.confirmation: Int get() = send.singleOrNull() ?: -1
+
+/** The error a step ended with. */
+private val Step<Int, CommandReply>.error: CommandException get() = (outcome as Outcome.Failed).error as CommandException
+
 private fun reply(result: CommandResult, progress: Int? = null, command: Int = ARM) = CommandReply(command, result.mavValue, progress)
 
 class CommandTransactionTest : StringSpec({
@@ -24,7 +32,7 @@ class CommandTransactionTest : StringSpec({
         val t = transaction()
         t.start(0).confirmation shouldBe 0
         val end = t.onReply(reply(CommandResult.ACCEPTED), 3 * MS)
-        end.outcome.shouldBeInstanceOf<CommandTransaction.Outcome.Accepted>()
+        end.outcome.shouldBeInstanceOf<Outcome.Done<CommandReply>>()
         end.confirmation shouldBe -1
         t.onReply(reply(CommandResult.DENIED), 4 * MS).outcome shouldBe null // a late duplicate changes nothing
     }
@@ -47,8 +55,7 @@ class CommandTransactionTest : StringSpec({
         waits.first() shouldBe timing.initialAttemptTimeout.inWholeNanoseconds
         waits.dropLast(1).zipWithNext().all { (a, b) -> b >= a } shouldBe true
         waits.max() shouldBeLessThanOrEqual timing.maxAttemptTimeout.inWholeNanoseconds
-        val error = t.error(step.outcome!!, emptyList())
-        error.shouldBeInstanceOf<CommandTimeout>().attempts shouldBe confirmations.size
+        step.error.shouldBeInstanceOf<CommandTimeout>().attempts shouldBe confirmations.size
     }
 
     "while the vehicle keeps talking a lost command goes again after the same timeout, then backs off; silence backs off at once" {
@@ -70,12 +77,18 @@ class CommandTransactionTest : StringSpec({
         waits(talking = false) shouldBe listOf(base, base * 3 / 2, base * 9 / 4, base * 27 / 8, base * 81 / 16, base * 243 / 32).map { it.coerceAtMost(timing.maxAttemptTimeout.inWholeNanoseconds) }
     }
 
-    "DENIED, UNSUPPORTED and FAILED end the command at once with the vehicle's texts" {
+    "DENIED, UNSUPPORTED and FAILED end the command with the vehicle's texts, from before the refusal and just after it" {
         for (result in listOf(CommandResult.DENIED, CommandResult.UNSUPPORTED, CommandResult.FAILED, CommandResult.CANCELLED)) {
             val t = transaction()
             t.start(0)
-            val end = t.onReply(reply(result), MS)
-            val error = t.error(end.outcome!!, listOf("Arm: Battery below minimum"))
+            t.onMessage(CommandInput.Text("Arm: Battery below minimum\t"), MS / 2)
+            val listening = t.onReply(reply(result), MS)
+            listening.outcome shouldBe null
+            listening.send shouldBe emptyList()
+            // A line queued behind the ack extends the wait; a repeated line counts once.
+            val later = t.onMessage(CommandInput.Text("Arm: Battery below minimum"), 100 * MS)
+            later.wakeAt shouldBe 250 * MS
+            val error = t.onTimer(later.wakeAt).error
             error.shouldBeInstanceOf<CommandRejected>().result shouldBe result
             error.message shouldBe "MAV_CMD_COMPONENT_ARM_DISARM was ${result.name}: Arm: Battery below minimum"
         }
@@ -91,13 +104,13 @@ class CommandTransactionTest : StringSpec({
         working.wakeAt shouldBe 2 * MS + 5.seconds.inWholeNanoseconds
         t.onReply(reply(CommandResult.IN_PROGRESS, 70), 3.seconds.inWholeNanoseconds)
         t.progress shouldBe 70
-        t.onReply(reply(CommandResult.ACCEPTED), 4.seconds.inWholeNanoseconds).outcome.shouldBeInstanceOf<CommandTransaction.Outcome.Accepted>()
+        t.onReply(reply(CommandResult.ACCEPTED), 4.seconds.inWholeNanoseconds).outcome.shouldBeInstanceOf<Outcome.Done<CommandReply>>()
 
         val stalled = transaction(timing)
         stalled.start(0)
         val wait = stalled.onReply(reply(CommandResult.IN_PROGRESS, 10), MS)
         val end = stalled.onTimer(wait.wakeAt)
-        stalled.error(end.outcome!!, emptyList()).shouldBeInstanceOf<CommandTimeout>().waitingFor shouldBe "a final result after IN_PROGRESS (10 %)"
+        end.error.shouldBeInstanceOf<CommandTimeout>().waitingFor shouldBe "a final result after IN_PROGRESS (10 %)"
     }
 
     "TEMPORARILY_REJECTED is retried after the retry delay, and fails once it has lasted the budget" {
@@ -107,27 +120,29 @@ class CommandTransactionTest : StringSpec({
         var now = MS
         var step = t.onReply(reply(CommandResult.TEMPORARILY_REJECTED), now)
         var resends = 0
-        while (step.outcome == null) {
-            step.wakeAt shouldBe now + 500 * MS
+        while (step.wakeAt == now + 500 * MS) {
             now = step.wakeAt
             t.onTimer(now).confirmation shouldBe ++resends
             now += MS
             step = t.onReply(reply(CommandResult.TEMPORARILY_REJECTED), now)
         }
         resends shouldBe 3
-        t.error(step.outcome!!, emptyList()).shouldBeInstanceOf<CommandRejected>().result shouldBe CommandResult.TEMPORARILY_REJECTED
+        t.onTimer(step.wakeAt).error.shouldBeInstanceOf<CommandRejected>().result shouldBe CommandResult.TEMPORARILY_REJECTED
 
         val later = transaction(timing)
         later.start(0)
         val retry = later.onReply(reply(CommandResult.TEMPORARILY_REJECTED), MS)
         later.onTimer(retry.wakeAt).confirmation shouldBe 1
-        later.onReply(reply(CommandResult.ACCEPTED), retry.wakeAt + MS).outcome.shouldBeInstanceOf<CommandTransaction.Outcome.Accepted>()
+        later.onReply(reply(CommandResult.ACCEPTED), retry.wakeAt + MS).outcome.shouldBeInstanceOf<Outcome.Done<CommandReply>>()
     }
 
     "answers to another command are ignored" {
         val t = transaction()
         val first = t.start(0)
-        t.onReply(reply(CommandResult.DENIED, command = 176), MS) shouldBe CommandTransaction.Step(wakeAt = first.wakeAt)
+        val ignored = t.onReply(reply(CommandResult.DENIED, command = 176), MS)
+        ignored.send shouldBe emptyList()
+        ignored.wakeAt shouldBe Step.KEEP
+        first.wakeAt shouldBe CommandTiming().initialAttemptTimeout.inWholeNanoseconds
         t.isDone shouldBe false
     }
 
@@ -163,7 +178,7 @@ class CommandTransactionTest : StringSpec({
                     step = t.onTimer(now, vehicleTalking = true) // its telemetry keeps coming through the loss
                 }
             }
-            withClue(seed) { step.outcome.shouldBeInstanceOf<CommandTransaction.Outcome.Accepted>() }
+            withClue(seed) { step.outcome.shouldBeInstanceOf<Outcome.Done<CommandReply>>() }
             now shouldBeLessThanOrEqual timing.timeout.inWholeNanoseconds
         }
     }

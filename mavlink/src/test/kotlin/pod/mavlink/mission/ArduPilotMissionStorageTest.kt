@@ -11,6 +11,7 @@ import io.kotest.property.arbitrary.enum
 import io.kotest.property.arbitrary.int
 import io.kotest.property.arbitrary.long
 import io.kotest.property.checkAll
+import kotlinx.coroutines.test.runTest
 import kotlin.random.Random
 
 private const val LAT = 411_780_460
@@ -18,11 +19,14 @@ private const val LON = -85_957_860
 
 /** Uploads [items] into [server] over a clean link and returns what a download gives back. */
 private fun roundTrip(server: MissionServer, items: List<MissionItem>, type: MissionType = MissionType.MISSION): List<MissionItem> {
-    val link = VirtualLink(server, Faults(), Faults(), seed = 1)
-    link.uploadAsDriver(type, items, TransferTiming(), server).shouldBeInstanceOf<TransferOutcome.Done<*>>()
-    val download = MissionDownload(type, TransferTiming())
-    val back = link.run(download::start, download::onMessage, download::onTimeout)
-    return (back as TransferOutcome.Done<List<MissionItem>>).value
+    var back: List<MissionItem>? = null
+    runTest {
+        onLossyLink(server, Faults(), Faults(), seed = 1) { vehicle, _ ->
+            vehicle.mission.upload(items, type)
+            back = vehicle.mission.download(type)
+        }
+    }
+    return back!!
 }
 
 class ArduPilotMissionStorageTest : StringSpec({
@@ -72,9 +76,7 @@ class ArduPilotMissionStorageTest : StringSpec({
             val items = randomItems(type, count, random)
             val fixedWing = random.nextBoolean()
             val server = MissionServer(flavor, fixedWing = fixedWing)
-            val link = VirtualLink(server, Faults(), Faults(), seed)
-            val upload = MissionUpload(type, items, TransferTiming())
-            link.run(upload::start, upload::onMessage, upload::onTimeout).shouldBeInstanceOf<TransferOutcome.Done<*>>()
+            runTest { onLossyLink(server, Faults(), Faults(), seed) { vehicle, _ -> vehicle.mission.upload(items, type) } }
             val held = server.list(type)
             val expected = if (flavor == MissionServerFlavor.ARDUPILOT) ArduPilotMissionStorage.stored(items, fixedWing) else items.map { it.copy(current = false) }
             held shouldBe expected
@@ -101,9 +103,14 @@ class ArduPilotMissionStorageTest : StringSpec({
             val server = MissionServer(MissionServerFlavor.ARDUPILOT).apply { home = MissionItem(0, 0, 16, x = LAT, y = LON, z = 100f) }
             val faults = Faults(drop = 0.1, minDelayMs = 5, maxDelayMs = 30)
             // Every ACCEPTED is lost, and so is every answer to a repeated last item: only a download can tell.
-            val link = VirtualLink(server, faults, faults, seed) { message, toVehicle -> !toVehicle && message is MissionMessage.Ack }
-            val outcome = link.uploadAsDriver(MissionType.MISSION, items, TransferTiming(), server)
-            withClue("seed $seed: $outcome") { outcome.shouldBeInstanceOf<TransferOutcome.Done<*>>() }
+            val lose = { message: MissionMessage, toVehicle: Boolean -> !toVehicle && message is MissionMessage.Ack }
+            runTest {
+                onLossyLink(server, faults, faults, seed, lose = lose) { vehicle, _ ->
+                    // Throws MissionNotConfirmed unless the download shows what was sent.
+                    vehicle.mission.upload(items)
+                }
+            }
+            withClue("seed $seed") { server.list(MissionType.MISSION).drop(1) shouldBe ArduPilotMissionStorage.stored(items, fixedWing = false).drop(1) }
         }
     }
 })

@@ -14,7 +14,13 @@ import io.kotest.property.arbitrary.enum
 import io.kotest.property.arbitrary.int
 import io.kotest.property.arbitrary.long
 import io.kotest.property.checkAll
+import io.dronefleet.mavlink.minimal.MavAutopilot
+import kotlinx.coroutines.test.runTest
+import kotlinx.coroutines.withTimeoutOrNull
+import pod.mavlink.MavlinkVehicle
 import kotlin.random.Random
+import kotlin.time.Duration.Companion.hours
+import kotlin.time.Duration.Companion.milliseconds
 
 /** A list of [count] valid items of [type], with varied frames, commands and values. */
 internal fun randomItems(type: MissionType, count: Int, random: Random): List<MissionItem> = List(count) { seq ->
@@ -47,26 +53,34 @@ private fun List<MissionItem>.stored() = map { it.copy(current = false) }
 internal fun List<MissionItem>.storedBy(flavor: MissionServerFlavor) =
     if (flavor == MissionServerFlavor.ARDUPILOT) ArduPilotMissionStorage.stored(this, fixedWing = false) else stored()
 
-/**
- * Uploads as the driver does: when the final ACK is missing, a download decides. Returns the
- * outcome a caller would see: Done, or Failed with a typed error.
- */
-internal fun VirtualLink.uploadAsDriver(type: MissionType, items: List<MissionItem>, timing: TransferTiming, server: MissionServer): TransferOutcome<Unit>? {
-    val upload = MissionUpload(type, items, timing)
-    val outcome = run(upload::start, upload::onMessage, upload::onTimeout)
-    if (outcome != TransferOutcome.AckMissing) return outcome
-    val download = MissionDownload(type, timing, inOrder = server.flavor == MissionServerFlavor.PX4)
-    return when (val check = run(download::start, download::onMessage, download::onTimeout)) {
-        is TransferOutcome.Done -> if (MissionStorage.holds(type, check.value, items, server.flavor == MissionServerFlavor.ARDUPILOT, server.fixedWing)) {
-            TransferOutcome.Done(Unit)
-        } else {
-            TransferOutcome.Failed(MissionNotConfirmed(type, check.value))
-        }
-        is TransferOutcome.Failed -> check
-        else -> null
-    }
+/** How a mission call ended: its result, or the [MissionException] it threw. */
+private sealed interface Ended<out T> {
+    data class Done<T>(val value: T) : Ended<T>
+    data class Failed(val error: MissionException) : Ended<Nothing>
 }
 
+/**
+ * Runs [call] to its end, or null when it is still going after [limit] of virtual time (generous:
+ * what is tested is that every transfer ends).
+ */
+private suspend fun <T> ending(limit: kotlin.time.Duration = 3.hours, call: suspend () -> T): Ended<T>? =
+    withTimeoutOrNull(limit) {
+        try {
+            Ended.Done(call())
+        } catch (e: MissionException) {
+            Ended.Failed(e)
+        }
+    }
+
+/** What a download gives back from a vehicle that holds [held] (the current item flagged in a mission). */
+private fun downloaded(type: MissionType, held: List<MissionItem>, server: MissionServer) =
+    if (type == MissionType.MISSION) held.mapIndexed { i, it -> it.copy(current = i == server.current) } else held
+
+/**
+ * Every property runs the real [MissionService] of a real [pod.mavlink.GroundStation] against a
+ * [MissionServer] behind a [MissionVehicle], on a seeded lossy [pod.mavlink.link.MemoryNetwork]
+ * in virtual time: the driver, the machines and the lost-ack check are the ones in production.
+ */
 class MissionTransferPropertyTest : StringSpec({
 
     "random lists over links with up to 30% loss plus duplication and reordering: uploaded and downloaded identical, or a typed failure, never a partial list" {
@@ -80,31 +94,22 @@ class MissionTransferPropertyTest : StringSpec({
             val items = randomItems(type, count, random)
             val server = MissionServer(flavor, maxItems = 1000).apply { load(type, old.storedBy(flavor)) }
             val faults = Faults(drop = drop, duplicate = duplicate, minDelayMs = 5, maxDelayMs = 60, hold = duplicate / 2)
-            val link = VirtualLink(server, faults, faults, seed)
-            val timing = TransferTiming()
+            runTest {
+                onLossyLink(server, faults, faults, seed) { vehicle, _ ->
+                    val outcome = ending { vehicle.mission.upload(items, type) }
+                    withClue("upload of $count ${type.name} items, drop $drop, dup $duplicate, ${flavor.name}: must end, not hang") {
+                        outcome.shouldNotBeNull()
+                    }
+                    val held = server.list(type)
+                    withClue("the vehicle holds the old list or the new one, never a mix") {
+                        (held == old.storedBy(flavor) || held == items.storedBy(flavor)) shouldBe true
+                    }
+                    if (outcome is Ended.Done) held shouldBe items.storedBy(flavor)
 
-            val outcome = link.uploadAsDriver(type, items, timing, server)
-            withClue("upload of $count ${type.name} items, drop $drop, dup $duplicate, ${flavor.name}: must end, not hang") {
-                outcome.shouldNotBeNull()
-            }
-            val held = server.list(type)
-            withClue("the vehicle holds the old list or the new one, never a mix") {
-                (held == old.storedBy(flavor) || held == items.storedBy(flavor)) shouldBe true
-            }
-            when (outcome) {
-                is TransferOutcome.Done -> held shouldBe items.storedBy(flavor)
-                is TransferOutcome.Failed -> outcome.error.shouldBeInstanceOf<MissionException>()
-                else -> Unit
-            }
-
-            val download = MissionDownload(type, timing, inOrder = flavor == MissionServerFlavor.PX4)
-            val downloaded = link.run(download::start, download::onMessage, download::onTimeout)
-            withClue("download must end") { downloaded.shouldNotBeNull() }
-            if (downloaded is TransferOutcome.Done) {
-                val expected = if (type == MissionType.MISSION) held.mapIndexed { i, it -> it.copy(current = i == server.current) } else held
-                downloaded.value shouldBe expected
-            } else {
-                (downloaded as TransferOutcome.Failed).error.shouldBeInstanceOf<MissionException>()
+                    val back = ending { vehicle.mission.download(type) }
+                    withClue("download must end") { back.shouldNotBeNull() }
+                    if (back is Ended.Done) back.value shouldBe downloaded(type, held, server)
+                }
             }
         }
     }
@@ -120,23 +125,25 @@ class MissionTransferPropertyTest : StringSpec({
             val items = randomItems(type, count, random)
             val server = MissionServer(flavor, maxItems = 1000).apply { load(type, old.storedBy(flavor)) }
             val faults = Faults(drop = drop, duplicate = 0.05, minDelayMs = 2, maxDelayMs = 20)
-            val link = VirtualLink(server, faults, faults, seed)
-            val upload = MissionUpload(type, items, TransferTiming())
-            val outcome = link.run(upload::start, upload::onMessage, upload::onTimeout, limitMs = cancelAtMs)
-            if (outcome == null) {
-                // What MissionService sends when the caller's coroutine is cancelled.
-                withClue("the vehicle goes quiet after the cancel, whether or not the ACK got through") {
-                    link.sendAndSettle(listOf(MissionMessage.Ack(type, MissionResult.OPERATION_CANCELLED))) shouldBe true
+            runTest {
+                onLossyLink(server, faults, faults, seed) { vehicle, onBoard ->
+                    // Cancelled, the service tells the vehicle with MISSION_ACK OPERATION_CANCELLED.
+                    val outcome = ending(cancelAtMs.milliseconds) { vehicle.mission.upload(items, type) }
+                    if (outcome == null) {
+                        withClue("the vehicle goes quiet after the cancel, whether or not the ACK got through") {
+                            onBoard.settle() shouldBe true
+                        }
+                    }
+                    val held = server.list(type)
+                    withClue("cancelled at $cancelAtMs ms: the vehicle holds the old list or the new one, never a mix") {
+                        (held == old.storedBy(flavor) || held == items.storedBy(flavor)) shouldBe true
+                    }
+                    val next = randomItems(type, random.nextInt(1, 50), random)
+                    val again = ending { vehicle.mission.upload(next, type) }
+                    withClue("the next upload after the cancel: $again") { again.shouldBeInstanceOf<Ended.Done<*>>() }
+                    server.list(type) shouldBe next.storedBy(flavor)
                 }
             }
-            val held = server.list(type)
-            withClue("cancelled at $cancelAtMs ms: the vehicle holds the old list or the new one, never a mix") {
-                (held == old.storedBy(flavor) || held == items.storedBy(flavor)) shouldBe true
-            }
-            val next = randomItems(type, random.nextInt(1, 50), random)
-            val again = link.uploadAsDriver(type, next, TransferTiming(), server)
-            withClue("the next upload after the cancel: $again") { again.shouldBeInstanceOf<TransferOutcome.Done<*>>() }
-            server.list(type) shouldBe next.storedBy(flavor)
         }
     }
 
@@ -153,29 +160,20 @@ class MissionTransferPropertyTest : StringSpec({
             val patch = randomItems(type, first + count, random).drop(first)
             val server = MissionServer(MissionServerFlavor.ARDUPILOT).apply { load(type, old) }
             val faults = Faults(drop = drop, duplicate = 0.05, minDelayMs = 2, maxDelayMs = 20)
-            val link = VirtualLink(server, faults, faults, seed)
-            val timing = TransferTiming()
-            val upload = MissionUpload(type, patch, timing, partialFrom = first)
-            var outcome: TransferOutcome<*>? = link.run(upload::start, upload::onMessage, upload::onTimeout)
             val expected = old.take(first) + patch.storedBy(MissionServerFlavor.ARDUPILOT) + old.drop(first + count)
-            if (outcome == TransferOutcome.AckMissing) {
-                // What MissionService does: download and compare the range.
-                val download = MissionDownload(type, timing)
-                val back = link.run(download::start, download::onMessage, download::onTimeout)
-                outcome = if (back is TransferOutcome.Done && back.value.stored() == expected) TransferOutcome.Done(Unit) else back
-            }
-            withClue("partial write of $count items at $first into $size, drop $drop: $outcome") {
-                outcome.shouldNotBeNull()
-                when (outcome) {
-                    is TransferOutcome.Done<*> -> {
-                        server.list(type).stored() shouldBe expected
-                        written++
+            runTest {
+                onLossyLink(server, faults, faults, seed) { vehicle, _ ->
+                    val outcome = ending { vehicle.mission.uploadPartial(patch, type) }
+                    withClue("partial write of $count items at $first into $size, drop $drop: $outcome") {
+                        outcome.shouldNotBeNull()
+                        val held = server.list(type).map { it.copy(current = false) }
+                        if (outcome is Ended.Done) {
+                            held shouldBe expected
+                            written++
+                        } else {
+                            (held == old || held == expected) shouldBe true
+                        }
                     }
-                    is TransferOutcome.Failed -> {
-                        outcome.error.shouldBeInstanceOf<MissionException>()
-                        (server.list(type).stored() == old || server.list(type).stored() == expected) shouldBe true
-                    }
-                    else -> error("unexpected outcome $outcome")
                 }
             }
         }
@@ -191,11 +189,13 @@ class MissionTransferPropertyTest : StringSpec({
                 val items = randomItems(MissionType.MISSION, 15, Random(seed)).storedBy(MissionServerFlavor.PX4)
                 val server = MissionServer(MissionServerFlavor.PX4).apply { load(MissionType.MISSION, items) }
                 val faults = Faults(drop = drop, minDelayMs = 1, maxDelayMs = 3)
-                val link = VirtualLink(server, faults, faults, seed)
-                val download = MissionDownload(MissionType.MISSION, TransferTiming(), inOrder = false)
-                val outcome = link.run(download::start, download::onMessage, download::onTimeout)
-                val back = (outcome as? TransferOutcome.Done<List<MissionItem>>)?.value?.map { it.copy(current = false) }
-                if (back != items) failures += "drop $drop seed $seed: $outcome"
+                runTest {
+                    onLossyLink(server, faults, faults, seed, autopilot = MavAutopilot.MAV_AUTOPILOT_GENERIC) { vehicle, _ ->
+                        val outcome = ending { vehicle.mission.download() }
+                        val back = (outcome as? Ended.Done)?.value?.map { it.copy(current = false) }
+                        if (back != items) failures += "drop $drop seed $seed: $outcome"
+                    }
+                }
             }
         }
         failures shouldBe emptyList()
@@ -208,9 +208,12 @@ class MissionTransferPropertyTest : StringSpec({
             val items = randomItems(MissionType.MISSION, 200, Random(seed))
             val server = MissionServer(flavor)
             val faults = Faults(drop = 0.1, minDelayMs = 10, maxDelayMs = 30)
-            val link = VirtualLink(server, faults, faults, seed)
-            val outcome = link.uploadAsDriver(MissionType.MISSION, items, TransferTiming(), server)
-            if (outcome !is TransferOutcome.Done) failures += "seed $seed ${flavor.name}: $outcome"
+            runTest {
+                onLossyLink(server, faults, faults, seed) { vehicle, _ ->
+                    val outcome = ending { vehicle.mission.upload(items) }
+                    if (outcome !is Ended.Done) failures += "seed $seed ${flavor.name}: $outcome"
+                }
+            }
         }
         failures shouldBe emptyList()
     }
@@ -227,20 +230,21 @@ class MissionTransferPaceTest : StringSpec({
     for (flavor in MissionServerFlavor.entries) {
         "at 30% loss each way on a 2 ms link, 100-item uploads and downloads with ${flavor.name} take a median under 6 s of virtual time" {
             val faults = Faults(drop = 0.3, minDelayMs = 1, maxDelayMs = 3)
-            val timing = TransferTiming()
             val uploads = ArrayList<Long>()
             val downloads = ArrayList<Long>()
             for (seed in 1L..11L) {
                 val items = randomItems(MissionType.MISSION, 100, Random(seed))
-                val server = MissionServer(flavor)
-                val link = VirtualLink(server, faults, faults, seed)
-                val roundTrip = RoundTripEstimator(timing) // shared, as MissionService shares it
-                val upload = MissionUpload(MissionType.MISSION, items, timing, roundTrip)
-                link.run(upload::start, upload::onMessage, upload::onTimeout).shouldNotBeNull()
-                uploads += link.elapsedMs
-                val download = MissionDownload(MissionType.MISSION, timing, inOrder = flavor == MissionServerFlavor.PX4, roundTrip)
-                link.run(download::start, download::onMessage, download::onTimeout).shouldBeInstanceOf<TransferOutcome.Done<*>>()
-                downloads += link.elapsedMs - uploads.last()
+                runTest {
+                    onLossyLink(MissionServer(flavor), faults, faults, seed) { vehicle: MavlinkVehicle, _ ->
+                        // Upload then download share the vehicle's round-trip estimate, as every transfer does.
+                        val started = testScheduler.currentTime
+                        ending { vehicle.mission.upload(items) }.shouldBeInstanceOf<Ended.Done<*>>()
+                        uploads += testScheduler.currentTime - started
+                        val downloadStarted = testScheduler.currentTime
+                        ending { vehicle.mission.download() }.shouldBeInstanceOf<Ended.Done<*>>()
+                        downloads += testScheduler.currentTime - downloadStarted
+                    }
+                }
             }
             withClue("upload ms $uploads") { uploads.sorted()[5] shouldBeLessThan 6_000L }
             withClue("download ms $downloads") { downloads.sorted()[5] shouldBeLessThan 6_000L }

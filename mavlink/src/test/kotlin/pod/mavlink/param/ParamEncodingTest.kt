@@ -1,5 +1,7 @@
 package pod.mavlink.param
 
+import pod.mavlink.protocol.Outcome
+import pod.mavlink.protocol.Step
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.types.shouldBeInstanceOf
@@ -31,23 +33,28 @@ class ParamEncodingTest : StringSpec({
     "a write is confirmed by the written value; one stale report is resent, a second different one is a refusal" {
         val timing = CommandTiming()
         val write = ParamExchange("WPNAV_SPEED", 800.0, ParamType.REAL32, timing, CommandRoundTrip(timing))
-        write.start(0).send shouldBe true
-        write.onValue(Parameter("OTHER", 800.0, ParamType.REAL32, 0, 2), 1).send shouldBe false
-        write.onValue(Parameter("WPNAV_SPEED", 500.0, ParamType.REAL32, 1, 2), 2).send shouldBe true
-        write.onValue(Parameter("WPNAV_SPEED", 800.0, ParamType.REAL32, 1, 2), 3).result?.value shouldBe 800.0
+        write.start(0).send shouldBe listOf(Unit)
+        write.onMessage(Parameter("OTHER", 800.0, ParamType.REAL32, 0, 2), 1).send shouldBe emptyList()
+        write.onMessage(Parameter("WPNAV_SPEED", 500.0, ParamType.REAL32, 1, 2), 2).send shouldBe listOf(Unit)
+        write.onMessage(Parameter("WPNAV_SPEED", 800.0, ParamType.REAL32, 1, 2), 3).outcome
+            .shouldBeInstanceOf<Outcome.Done<Parameter>>().value.value shouldBe 800.0
 
         val refused = ParamExchange("SYSID_SW_TYPE", 3.0, ParamType.INT8, timing, CommandRoundTrip(timing))
         refused.start(0)
-        refused.onValue(Parameter("SYSID_SW_TYPE", 10.0, ParamType.INT8, 0, 1), 1)
-        val end = refused.onValue(Parameter("SYSID_SW_TYPE", 10.0, ParamType.INT8, 0, 1), 2)
-        end.error.shouldBeInstanceOf<ParamRejected>().message shouldBe "the vehicle kept SYSID_SW_TYPE = 10 instead of 3 (read-only, out of its range, or refused)"
+        refused.onMessage(Parameter("SYSID_SW_TYPE", 10.0, ParamType.INT8, 0, 1), 1)
+        val end = refused.onMessage(Parameter("SYSID_SW_TYPE", 10.0, ParamType.INT8, 0, 1), 2)
+        end.outcome.shouldBeInstanceOf<Outcome.Failed>().error.shouldBeInstanceOf<ParamRejected>().message shouldBe "the vehicle kept SYSID_SW_TYPE = 10 instead of 3 (read-only, out of its range, or refused)"
     }
 
     "a parameter the vehicle does not have times out with a message saying so" {
         val timing = CommandTiming()
         val read = ParamExchange("NO_SUCH", null, null, timing, CommandRoundTrip(timing))
         var step = read.start(0)
-        while (step.error == null) step = read.onTimer(step.wakeAt)
-        step.error.shouldBeInstanceOf<ParamTimeout>().waited shouldBe timing.timeout
+        var wakeAt = step.wakeAt
+        while (step.outcome == null) {
+            step = read.onTimer(wakeAt)
+            if (step.wakeAt != Step.KEEP) wakeAt = step.wakeAt
+        }
+        step.outcome.shouldBeInstanceOf<Outcome.Failed>().error.shouldBeInstanceOf<ParamTimeout>().waited shouldBe timing.timeout
     }
 })
