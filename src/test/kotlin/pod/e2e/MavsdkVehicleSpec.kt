@@ -6,6 +6,8 @@ import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.comparables.shouldBeGreaterThan
 import io.kotest.matchers.comparables.shouldBeLessThan
 import io.kotest.matchers.shouldBe
+import kotlinx.coroutines.flow.last
+import kotlinx.coroutines.flow.onEach
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.coroutineScope
@@ -101,14 +103,14 @@ class MavsdkVehicleSpec : StringSpec({
                     // Pod times out after ~40 ms here, resends, and then gets every queued answer at once.
                     val upload = Freezer(peer.process, this, pause)
                     val uploadStarted = TimeSource.Monotonic.markNow()
-                    vehicle.mission.upload(items) { if (it.done >= 20) upload.freezeOnce() }
+                    vehicle.mission.uploading(items).collect { if (it.done >= 20) upload.freezeOnce() }
                     upload.frozen shouldBe true
                     uploadStarted.elapsedNow() shouldBeGreaterThan pause
                     peer.received(1) shouldBe ("SUCCESS" to items)
 
                     val download = Freezer(peer.process, this, pause)
                     val downloadStarted = TimeSource.Monotonic.markNow()
-                    vehicle.mission.download { if (it.done >= 20) download.freezeOnce() } shouldBe items
+                    vehicle.mission.downloading().onEach { if (it.done >= 20) download.freezeOnce() }.last().items shouldBe items
                     download.frozen shouldBe true
                     downloadStarted.elapsedNow() shouldBeGreaterThan pause
                 }

@@ -17,7 +17,6 @@ import pod.mavlink.MavlinkVehicle
 import pod.mavlink.command.CommandRejected
 import pod.mavlink.command.CommandResult
 import pod.mavlink.command.VehicleCommand
-import java.util.concurrent.CopyOnWriteArrayList
 import kotlin.time.Duration.Companion.seconds
 
 private const val SYSID = 23
@@ -47,13 +46,13 @@ private suspend fun JsonPeer.events(name: String, command: Int, count: Int): Lis
 /** Pod's CommandService against COMMAND_ACKs encoded by pymavlink, not by Pod's own codec. */
 class PymavlinkCommandSpec : StringSpec({
 
-    "IN_PROGRESS acks with progress from pymavlink reach onProgress, and the final ACCEPTED carries result_param2" {
+    "IN_PROGRESS acks with progress from pymavlink come as a flow, and its last element's ACCEPTED carries result_param2" {
         withScriptedVehicle { vehicle, peer ->
-            val progress = CopyOnWriteArrayList<Int?>()
-            val reply = vehicle.commands.send(VehicleCommand(241, param1 = 1f)) { progress += it }
+            val progress = vehicle.commands.sending(VehicleCommand(241, param1 = 1f)).toList()
+            val reply = progress.last().reply!!
             reply.result shouldBe CommandResult.ACCEPTED
             reply.resultParam2 shouldBe 7
-            progress shouldBe listOf(10, 60)
+            progress.dropLast(1).map { it.percent } shouldBe listOf(10, 60)
             // Sent once: an IN_PROGRESS answer stops the resends.
             peer.events("command", 241, 1).single()["confirmation"] shouldBe "0"
         }

@@ -8,6 +8,7 @@ import com.github.ajalt.clikt.parameters.options.default
 import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.choice
+import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.launch
@@ -41,24 +42,32 @@ internal abstract class MissionAction(out: Output, name: String) : VehicleComman
         .default(MissionType.MISSION, defaultForHelp = "mission")
 
     /**
-     * Runs [transfer], reporting its progress: a [TransferProgressView] for people (a bar at a
-     * terminal, a few lines elsewhere, once the total is known), a JSON line per item for scripts.
+     * Collects [transfer] to its end, reporting its progress: a [TransferProgressView] for people (a
+     * bar at a terminal, a few lines elsewhere, once the total is known), a JSON line per item for
+     * scripts. Returns the last progress (a download's carries the list).
      */
-    protected suspend fun <T> withProgress(action: String, transfer: suspend (onProgress: (TransferProgress) -> Unit) -> T): T {
+    protected suspend fun withProgress(action: String, transfer: Flow<TransferProgress>): TransferProgress? {
+        var last: TransferProgress? = null
         if (json) {
-            var last = -1
-            return transfer { p ->
-                if (p.done != last) {
-                    last = p.done
+            var shown = -1
+            transfer.collect { p ->
+                last = p
+                if (p.done != shown) {
+                    shown = p.done
                     emit(Event.Progress(action, p.done, p.total))
                 }
             }
+            return last
         }
         val view = TransferProgressView(out, action)
         return coroutineScope {
             val ticker = if (view.animated) launch { while (true) { delay(TransferProgressView.TICK); view.tick() } } else null
             try {
-                transfer(view::update)
+                transfer.collect {
+                    last = it
+                    view.update(it)
+                }
+                last
             } finally {
                 ticker?.cancel()
                 view.finish()
@@ -90,7 +99,7 @@ internal class MissionUpload(out: Output) : MissionAction(out, "upload") {
     }
 
     override suspend fun act(vehicle: MavlinkVehicle) {
-        withProgress("uploading") { vehicle.mission.upload(items, type, it) }
+        withProgress("uploading", vehicle.mission.uploading(items, type))
         val list = type.name.lowercase()
         finish(
             if (items.isEmpty()) "uploaded an empty $list list: cleared the $list list of vehicle ${vehicle.systemId}" else "uploaded ${items(items.size, type)} to vehicle ${vehicle.systemId}",
@@ -111,7 +120,7 @@ internal class MissionDownload(out: Output) : MissionAction(out, "download") {
     }
 
     override suspend fun act(vehicle: MavlinkVehicle) {
-        val items = withProgress("downloading") { vehicle.mission.download(type, it) }
+        val items = withProgress("downloading", vehicle.mission.downloading(type))?.items.orEmpty()
         try {
             WplFile.write(Path.of(file), items)
         } catch (e: IOException) {

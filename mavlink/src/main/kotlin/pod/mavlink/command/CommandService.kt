@@ -50,7 +50,7 @@ public class CommandService internal constructor(
                 trySend(CommandProgress(it, null))
             }
         }
-        send(CommandProgress(reply.progress ?: percent, reply))
+        send(CommandProgress(percent, reply))
     }.buffer(Channel.UNLIMITED)
 
     private fun lockFor(command: Int): Mutex = synchronized(locks) { locks.getOrPut(command) { Mutex() } }

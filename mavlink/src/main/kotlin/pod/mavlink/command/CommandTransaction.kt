@@ -215,7 +215,7 @@ internal class CommandTransaction(
 
 /** How far a command sent with [CommandService.sending] has come. */
 public data class CommandProgress(
-    /** Percent done as the vehicle last said with IN_PROGRESS, or null when it did not say. */
+    /** Percent done as the vehicle last said with IN_PROGRESS (on the last element too), or null when it did not say. */
     public val percent: Int?,
     /** The vehicle's final reply (ACCEPTED), on the last element only; null before. */
     public val reply: CommandReply?,

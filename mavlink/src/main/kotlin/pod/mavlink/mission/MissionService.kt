@@ -4,7 +4,8 @@ import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.channelFlow
-import kotlinx.coroutines.flow.conflate
+import kotlinx.coroutines.channels.Channel
+import kotlinx.coroutines.flow.buffer
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
 import pod.core.vehicle.Autopilot
@@ -53,8 +54,8 @@ public class MissionService internal constructor(
      */
     public fun uploading(items: List<MissionItem>, type: MissionType = MissionType.MISSION): Flow<TransferProgress> = channelFlow {
         MissionValidation.check(type, items)
-        write(type, items, partialFrom = null) { trySend(it) }
-    }.conflate()
+        write(type, items, partialFrom = null, changes { trySend(it) })
+    }.buffer(Channel.UNLIMITED)
 
     /**
      * Replaces items `items.first().seq` up to `items.last().seq` of the vehicle's [type] list and
@@ -132,9 +133,21 @@ public class MissionService internal constructor(
      * the list ([TransferProgress.items]); errors are those of [download].
      */
     public fun downloading(type: MissionType = MissionType.MISSION): Flow<TransferProgress> = channelFlow {
-        val items = exclusive.withLock { afterOwnCancel(type) { downloadLocked(type) { trySend(it) } } }
+        val report = changes { trySend(it) }
+        val items = exclusive.withLock { afterOwnCancel(type) { downloadLocked(type, report) } }
         send(TransferProgress(items.size, items.size, items))
-    }.conflate()
+    }.buffer(Channel.UNLIMITED)
+
+    /** [report] called only when the progress changed: at most one element per item. */
+    private fun changes(report: (TransferProgress) -> Unit): (TransferProgress) -> Unit {
+        var last: TransferProgress? = null
+        return { progress ->
+            if (progress != last) {
+                last = progress
+                report(progress)
+            }
+        }
+    }
 
     /**
      * Runs [attempt] again while the vehicle answers DENIED within [ABANDONED_UPLOAD_HOLD] of an

@@ -201,9 +201,11 @@ internal class MissionUpload(
             phase = Phase.AWAITING_ACK
             Step(listOf(item(items.size - 1)))
         }
-        // PX4 answers a duplicated MISSION_COUNT with ERROR ("busy") and carries on: an ERROR only
-        // counts if the vehicle then falls silent (see onTimer).
-        result == MissionResult.ERROR && phase != Phase.COUNTING -> pending(result, now)
+        // PX4 answers a duplicated MISSION_COUNT with ERROR ("busy") and carries on, and a vehicle
+        // answers a late duplicate of the previous upload's last item with ERROR, which can reach
+        // us while this upload is still counting: an ERROR only counts if the vehicle then falls
+        // silent (see onTimer).
+        result == MissionResult.ERROR -> pending(result, now)
         // ArduPilot answers a repeated MISSION_WRITE_PARTIAL_LIST (ours, resent or duplicated on the
         // way) with DENIED while it serves the first one: only silence afterwards makes it count.
         result == MissionResult.DENIED && partialFrom != null -> pending(result, now)

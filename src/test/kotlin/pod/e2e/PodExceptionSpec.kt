@@ -1,0 +1,53 @@
+package pod.e2e
+
+import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.collections.shouldBeEmpty
+import io.kotest.matchers.collections.shouldContain
+import io.kotest.matchers.ints.shouldBeGreaterThan
+import pod.core.PodException
+import java.lang.reflect.Modifier
+import java.net.URI
+import java.nio.file.FileSystems
+import java.nio.file.Files
+import java.nio.file.Path
+import java.nio.file.Paths
+import kotlin.io.path.extension
+import kotlin.io.path.invariantSeparatorsPathString
+
+/** Every class of Pod's main code (not its tests), by name, from each module's classes on the class path. */
+private fun podMainClasses(): List<String> {
+    val loader = PodException::class.java.classLoader
+    return loader.getResources("pod/").toList().flatMap { url ->
+        val uri = url.toURI()
+        val root: Path = when (uri.scheme) {
+            "file" -> Paths.get(uri).parent
+            "jar" -> FileSystems.newFileSystem(URI.create(uri.toString().substringBefore("!/")), emptyMap<String, Any>()).getPath("/")
+            else -> return@flatMap emptyList()
+        }
+        if ("test-classes" in root.toString()) return@flatMap emptyList()
+        Files.walk(root.resolve("pod")).use { paths ->
+            paths.filter { it.extension == "class" }.map { root.relativize(it).invariantSeparatorsPathString.removeSuffix(".class").replace('/', '.') }.toList()
+        }
+    }.distinct()
+}
+
+/**
+ * Failures that are not [PodException] on purpose: cancellation must stay a
+ * CancellationException for coroutines to unwind.
+ */
+private val CANCELLATIONS = setOf("pod.launch.Interrupted")
+
+class PodExceptionSpec : StringSpec({
+
+    "every public exception class in Pod's main code extends PodException" {
+        val loader = PodException::class.java.classLoader
+        val throwables = podMainClasses()
+            .map { Class.forName(it, false, loader) }
+            .filter { Throwable::class.java.isAssignableFrom(it) && Modifier.isPublic(it.modifiers) }
+        // The scan sees the modules: the exceptions of core, mavlink and launch at least.
+        throwables.map { it.name } shouldContain "pod.core.vehicle.VehicleLost"
+        throwables.map { it.name } shouldContain "pod.mavlink.mission.MissionTimeout"
+        throwables.size shouldBeGreaterThan 20
+        throwables.filterNot { PodException::class.java.isAssignableFrom(it) || it.name in CANCELLATIONS }.map { it.name }.shouldBeEmpty()
+    }
+})
