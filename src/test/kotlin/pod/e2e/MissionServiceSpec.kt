@@ -39,7 +39,7 @@ private suspend fun withSim(config: SimVehicleConfig, block: suspend (MavlinkVeh
 /** Starts uploading [count] items and cancels the upload once the vehicle has taken about a tenth of them. */
 private suspend fun cancelUploadMidway(vehicle: MavlinkVehicle, count: Int) = coroutineScope {
     val midway = CompletableDeferred<Unit>()
-    val upload = launch { vehicle.mission.upload(waypoints(count)) { if (it.done >= count / 10) midway.complete(Unit) } }
+    val upload = launch { vehicle.mission.uploading(waypoints(count)).collect { if (it.done >= count / 10) midway.complete(Unit) } }
     withTimeout(20.seconds) { midway.await() }
     upload.cancel()
     upload.join()

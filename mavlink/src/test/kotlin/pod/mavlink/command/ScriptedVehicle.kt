@@ -103,6 +103,16 @@ class ScriptedVehicle private constructor(
             seeStationRequests: Boolean = false,
             answer: suspend (message: Any) -> List<Any>,
         ): ScriptedVehicle =
-            ScriptedVehicle(MavlinkLink.open("udpout://127.0.0.1:$gcsPort"), systemId, autopilot, answer, seeStationRequests).also { it.start(scope) }
+            start(scope, MavlinkLink.open("udpout://127.0.0.1:$gcsPort"), systemId, autopilot, seeStationRequests, answer)
+
+        /** Starts a vehicle on [link] (a socket, or a memory network's) in [scope]. */
+        fun start(
+            scope: CoroutineScope,
+            link: MavlinkLink,
+            systemId: Int = 1,
+            autopilot: Int = MavlinkEnums.MAV_AUTOPILOT_ARDUPILOTMEGA,
+            seeStationRequests: Boolean = false,
+            answer: suspend (message: Any) -> List<Any>,
+        ): ScriptedVehicle = ScriptedVehicle(link, systemId, autopilot, answer, seeStationRequests).also { it.start(scope) }
     }
 }
