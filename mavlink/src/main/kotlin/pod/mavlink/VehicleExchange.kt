@@ -88,10 +88,18 @@ internal suspend fun <I, O, T> MavlinkVehicle.run(
                 is Outcome.Done -> return@coroutineScope outcome.value
                 is Outcome.Failed -> throw outcome.error
             }
+            // A message already waiting is handled without arming a timer (bursts: a download's
+            // window, an upload's requests); a select prefers it over an expired timer all the same.
+            val waiting = inbox.tryReceive()
+            waiting.exceptionOrNull()?.let { throw it } // closed: the vehicle was lost
             val timer = wakeAt
-            step = select {
-                inbox.onReceive { machine.onMessage(it, now()) }
-                if (timer != Step.NEVER) onTimeout((timer - now()).coerceAtLeast(0).nanoseconds) { machine.onTimer(now()) }
+            step = if (waiting.isSuccess) {
+                machine.onMessage(waiting.getOrThrow(), now())
+            } else {
+                select {
+                    inbox.onReceive { machine.onMessage(it, now()) }
+                    if (timer != Step.NEVER) onTimeout((timer - now()).coerceAtLeast(0).nanoseconds) { machine.onTimer(now()) }
+                }
             }
         }
         @Suppress("UNREACHABLE_CODE")
