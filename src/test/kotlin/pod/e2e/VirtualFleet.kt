@@ -22,6 +22,7 @@ import pod.sim.SimPlatform
 import pod.sim.SimVehicle
 import pod.sim.SimVehicleConfig
 import pod.sim.fault.FaultConditions
+import pod.sim.fault.LinkCounters
 import pod.sim.fault.LinkFaults
 import java.util.concurrent.ConcurrentHashMap
 import kotlin.time.Duration
@@ -45,8 +46,19 @@ internal class VirtualFleet(
 
     private val listening: MutableSet<Int> = ConcurrentHashMap.newKeySet()
 
+    private val routes = FaultConditions.byDirection(seed, up, down) { it in listening }
+    private val models: MutableList<Pair<Boolean, FaultConditions>> = java.util.Collections.synchronizedList(ArrayList())
+
     /** The in-memory network everything talks over. */
-    val network = MemoryNetwork(test.backgroundScope, timebase, FaultConditions.byDirection(seed, up, down) { it in listening })
+    val network = MemoryNetwork(test.backgroundScope, timebase) { from, to ->
+        routes(from, to)?.also { models += (to.port in listening) to it }
+    }
+
+    /** What the faults did so far to datagrams towards the ground ([towardsGround]) or away from it, summed over routes. */
+    fun counters(towardsGround: Boolean): LinkCounters = synchronized(models) {
+        models.filter { it.first == towardsGround }.map { it.second.model.counters }
+            .fold(LinkCounters()) { a, b -> LinkCounters(a.sent + b.sent, a.dropped + b.dropped, a.duplicated + b.duplicated, a.reordered + b.reordered, a.corrupted + b.corrupted, a.delivered + b.delivered) }
+    }
 
     /** Opens links on [network], noting the ports that listen (the ground side of [up]). */
     val openLink = LinkOpener { address ->
