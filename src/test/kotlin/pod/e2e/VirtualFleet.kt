@@ -69,8 +69,9 @@ internal class VirtualFleet(
     suspend fun <T> simulate(
         flavors: List<SimFlavor>,
         onEvent: (EngineEvent) -> Unit = {},
+        station: GroundStationConfig = GroundStationConfig(),
         program: suspend Program.(SimPlatform) -> T,
-    ): Pair<T, SimRecord> = simulate(flavors, timeScale = 1.0, onEvent = onEvent, timebase = timebase, openLink = openLink, program = program)
+    ): Pair<T, SimRecord> = simulate(flavors, timeScale = 1.0, onEvent = onEvent, timebase = timebase, openLink = openLink, station = station, program = program)
 
     /** A started [SimPlatform] of [flavors] on this world (see [SimPlatform.start]). */
     suspend fun platform(scope: CoroutineScope, flavors: List<SimFlavor>): SimPlatform =

@@ -8,6 +8,7 @@ import pod.core.engine.Program
 import pod.core.mission.Mission
 import pod.core.time.Timebase
 import pod.launch.map.SvgMap
+import pod.mavlink.GroundStationConfig
 import pod.launch.map.Tracks
 import pod.sim.LinkOpener
 import pod.sim.SimFlavor
@@ -35,6 +36,7 @@ public class SimRecord(
  * with [openLink]: given a test scheduler's timebase and a [pod.mavlink.link.MemoryNetwork]
  * (`LinkOpener.memory(network)`) and a [timeScale] of 1, the whole run is in virtual time,
  * deterministic, with no real-time deadline. Call it from a coroutine on [timebase]'s dispatcher.
+ * [station] configures the fleet's ground station (a longer `lostAfter` for a lossy link, say).
  */
 public suspend fun <T> simulate(
     flavors: List<SimFlavor>,
@@ -44,9 +46,10 @@ public suspend fun <T> simulate(
     map: Path? = null,
     timebase: Timebase = Timebase.System,
     openLink: LinkOpener = LinkOpener.Udp,
+    station: GroundStationConfig = GroundStationConfig(),
     program: suspend Program.(SimPlatform) -> T,
 ): Pair<T, SimRecord> = coroutineScope {
-    val sim = SimPlatform.start(this, flavors, timeScale, timebase = timebase, openLink = openLink)
+    val sim = SimPlatform.start(this, flavors, timeScale, timebase = timebase, openLink = openLink, station = station)
     try {
         val names = sim.platform.vehicles.value.associate { it.id to it.name }
         val events = mutableListOf<EngineEvent>()
