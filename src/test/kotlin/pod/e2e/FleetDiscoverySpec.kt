@@ -1,6 +1,7 @@
 package pod.e2e
 
 import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.comparables.shouldBeLessThanOrEqualTo
 import io.kotest.matchers.collections.shouldContainExactlyInAnyOrder
 import io.kotest.matchers.comparables.shouldBeGreaterThanOrEqualTo
 import io.kotest.matchers.doubles.plusOrMinus
@@ -61,32 +62,37 @@ class FleetDiscoverySpec : StringSpec({
         }
     }
 
-    "a stopped vehicle is marked lost after the configured silence and found again when it restarts" {
-        coroutineScope {
-            val lostAfter = 1500.milliseconds
-            val gcs = GroundStation.open("udpin://127.0.0.1:0", this, GroundStationConfig(lostAfter = lostAfter))
-            val sims = (1..3).map { SimVehicle(SimVehicleConfig(systemId = it, gcs = "udpout://127.0.0.1:${gcs.link.localPort}")) }
-            try {
-                sims.forEach { it.start(this) }
-                withTimeout(10.seconds) { gcs.vehicles.first { it.size == 3 } }
+    "a stopped vehicle is marked lost after the configured silence and found again when it restarts (virtual time)" {
+        virtualRun {
+            coroutineScope {
+                val lostAfter = 1500.milliseconds
+                val gcs = station(this, GroundStationConfig(lostAfter = lostAfter))
+                val sims = (1..3).map { vehicle(SimVehicleConfig(systemId = it), gcs) }
+                try {
+                    sims.forEach { it.start(this) }
+                    withTimeout(10.seconds) { gcs.vehicles.first { it.size == 3 } }
 
-                val lost = async(start = CoroutineStart.UNDISPATCHED) { gcs.events.filterIsInstance<FleetEvent.Lost>().first() }
-                sims[1].stop()
-                val event = withTimeout(lostAfter + 5.seconds) { lost.await() }
-                event.vehicle.systemId shouldBe 2
-                event.silence shouldBeGreaterThanOrEqualTo lostAfter
-                event.vehicle.connection.value shouldBe ConnectionState.LOST
-                gcs.vehicles.value.getValue(1).connection.value shouldBe ConnectionState.CONNECTED
-                gcs.vehicles.value.getValue(3).connection.value shouldBe ConnectionState.CONNECTED
+                    val lost = async(start = CoroutineStart.UNDISPATCHED) { gcs.events.filterIsInstance<FleetEvent.Lost>().first() }
+                    sims[1].stop()
+                    val stoppedAt = timebase.clock.markNow()
+                    val event = withTimeout(lostAfter + 5.seconds) { lost.await() }
+                    event.vehicle.systemId shouldBe 2
+                    event.silence shouldBeGreaterThanOrEqualTo lostAfter
+                    // Found lost within one silence check of lostAfter, in virtual time.
+                    stoppedAt.elapsedNow() shouldBeLessThanOrEqualTo lostAfter + 1.seconds
+                    event.vehicle.connection.value shouldBe ConnectionState.LOST
+                    gcs.vehicles.value.getValue(1).connection.value shouldBe ConnectionState.CONNECTED
+                    gcs.vehicles.value.getValue(3).connection.value shouldBe ConnectionState.CONNECTED
 
-                val regained = async(start = CoroutineStart.UNDISPATCHED) { gcs.events.filterIsInstance<FleetEvent.Regained>().first() }
-                sims[1].start(this)
-                withTimeout(5.seconds) { regained.await() }.vehicle.systemId shouldBe 2
-                gcs.vehicles.value.getValue(2).connection.value shouldBe ConnectionState.CONNECTED
-                gcs.vehicles.value.size shouldBe 3
-            } finally {
-                sims.forEach { it.stop() }
-                gcs.close()
+                    val regained = async(start = CoroutineStart.UNDISPATCHED) { gcs.events.filterIsInstance<FleetEvent.Regained>().first() }
+                    sims[1].start(this)
+                    withTimeout(5.seconds) { regained.await() }.vehicle.systemId shouldBe 2
+                    gcs.vehicles.value.getValue(2).connection.value shouldBe ConnectionState.CONNECTED
+                    gcs.vehicles.value.size shouldBe 3
+                } finally {
+                    sims.forEach { it.stop() }
+                    gcs.close()
+                }
             }
         }
     }

@@ -8,6 +8,8 @@ import io.kotest.matchers.doubles.shouldBeLessThan
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import kotlin.math.abs
+import kotlin.time.Duration.Companion.hours
+import kotlin.time.Duration.Companion.minutes
 import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.cancelAndJoin
@@ -70,13 +72,13 @@ private fun inOrder(steps: Int): List<MissionEvent> = listOf(MissionEvent.Upload
 
 class MissionExecutorSpec : StringSpec({
 
-    for ((flavor, scale) in listOf(SimFlavor.ARDUCOPTER to 20.0, SimFlavor.PX4 to 20.0, SimFlavor.ARDUPLANE to 30.0)) {
+    for (flavor in listOf(SimFlavor.ARDUCOPTER, SimFlavor.PX4, SimFlavor.ARDUPLANE)) {
         "a ${flavor.name} flies takeoff, waypoints, a loiter of turns and a landing to completion: landed, disarmed, every step reported in order" {
-            withVehicle(flavor, scale) { fleet, v, vehicle, sim ->
+            virtualRun { withVehicle(flavor) { fleet, v, vehicle, sim ->
                 val home = sim.config.home
                 val mission = if (flavor == SimFlavor.ARDUPLANE) planeCircuit(home) else copterSurvey(home)
                 val events = ArrayList<MissionEvent>()
-                withTimeout(120.seconds) { fleet.fly(v, mission) { events += it } }
+                withTimeout(1.hours) { fleet.fly(v, mission) { events += it } }
                 events shouldBe inOrder(mission.steps.size)
                 vehicle.telemetry.armed.value shouldBe false
                 vehicle.telemetry.landedState.value shouldBe LandedState.ON_GROUND
@@ -92,31 +94,31 @@ class MissionExecutorSpec : StringSpec({
                     }
                     else -> Unit
                 }
-            }
+            } }
         }
     }
 
     for (flavor in listOf(SimFlavor.ARDUCOPTER, SimFlavor.PX4)) {
         "a ${flavor.name} mission ending in an unlimited loiter completes once the vehicle loiters at the final point" {
-            withVehicle(flavor) { fleet, v, vehicle, sim ->
+            virtualRun { withVehicle(flavor) { fleet, v, vehicle, sim ->
                 val home = sim.config.home
                 val end = home.at(30, 30, 20.0)
                 val mission = Mission("loiter", null, listOf(MissionStep.TakeOff(home.at(0, 0, 15.0), 0.deg), MissionStep.Waypoint(home.at(30, 0, 15.0)), MissionStep.Loiter(end, 0.m, LoiterDuration.Unlimited)))
                 val events = ArrayList<MissionEvent>()
-                withTimeout(60.seconds) { fleet.fly(v, mission) { events += it } }
+                withTimeout(20.minutes) { fleet.fly(v, mission) { events += it } }
                 events shouldBe inOrder(3)
                 val p = vehicle.telemetry.position.value!!
                 p.location.distanceTo(end).meters shouldBeLessThan 3.0
                 abs(p.relativeAltitude.meters - 20.0) shouldBeLessThan 3.0
                 vehicle.telemetry.armed.value shouldBe true
                 vehicle.telemetry.mode.value!!.name shouldBe if (flavor == SimFlavor.PX4) "AUTO.MISSION" else "AUTO"
-            }
+            } }
         }
     }
 
     for (flavor in listOf(SimFlavor.ARDUCOPTER, SimFlavor.PX4, SimFlavor.ARDUPLANE)) {
         "a ${flavor.name} mission downloaded from the vehicle reads back as the same steps" {
-            withVehicle(flavor) { _, _, vehicle, sim ->
+            virtualRun { withVehicle(flavor) { _, _, vehicle, sim ->
                 val home = sim.config.home
                 val missionFlavor = MissionFlavor.of(vehicle.identity.value)
                 val plane = flavor == SimFlavor.ARDUPLANE
@@ -149,25 +151,25 @@ class MissionExecutorSpec : StringSpec({
                 } else {
                     read shouldBe kept(steps)
                 }
-            }
+            } }
         }
     }
 
     "cancelling a flight mid-mission returns promptly, and HOLD then keeps the copter where it stopped, at its height, armed, in BRAKE" {
-        withVehicle(SimFlavor.ARDUCOPTER, timeScale = 5.0) { fleet, v, vehicle, sim ->
+        virtualRun { withVehicle(SimFlavor.ARDUCOPTER) { fleet, v, vehicle, sim ->
             val home = sim.config.home
             val mission = Mission("long", null, listOf(MissionStep.TakeOff(home.at(0, 0, 15.0), 0.deg), MissionStep.Waypoint(home.at(300, 0, 15.0)), MissionStep.Land(home.at(0, 0, 0.0))))
             val events = MutableStateFlow<List<MissionEvent>>(emptyList())
             val flight = launch { fleet.fly(v, mission) { e -> events.value += e } }
-            withTimeout(60.seconds) { events.first { MissionEvent.StepStarted(1) in it } }
+            withTimeout(10.minutes) { events.first { MissionEvent.StepStarted(1) in it } }
             withTimeout(1.seconds) { flight.cancelAndJoin() }
-            withTimeout(2.seconds) { fleet.makeSafe(v, SafeState.HOLD) }
+            withTimeout(10.seconds) { fleet.makeSafe(v, SafeState.HOLD) }
             val stopped = vehicle.telemetry.position.value!!.location
             val stoppedHeight = vehicle.telemetry.position.value!!.relativeAltitude.meters
             // Every GLOBAL_POSITION_INT, not the StateFlow, which skips repeats of a vehicle standing still.
             val reports = vehicle.messages.mapNotNull { it.message as? GlobalPositionInt }.map { Location(it.lat() / 1e7, it.lon() / 1e7, (it.relativeAlt() / 1000.0).m) }
             // Reports come at 4 Hz of the vehicle's own time: settled is 2 s of them within 0.2 m, held is the next 10 s.
-            val settled = withTimeout(30.seconds) {
+            val settled = withTimeout(2.minutes) {
                 val window = ArrayDeque<Location>()
                 reports.first { p ->
                     window.addLast(p)
@@ -178,57 +180,57 @@ class MissionExecutorSpec : StringSpec({
             settled.distanceTo(stopped).meters shouldBeLessThan 20.0
             // ArduCopter's LOITER (Pod's hold before) sinks at PILOT_SPEED_UP with no stick input.
             abs(settled.altitude.meters - stoppedHeight) shouldBeLessThan 1.0 // the reports carry the height above home
-            for (p in withTimeout(30.seconds) { reports.take(40).toList() }) {
+            for (p in withTimeout(2.minutes) { reports.take(40).toList() }) {
                 p.distanceTo(settled).meters shouldBeLessThan 1.0
                 abs(p.altitude.meters - settled.altitude.meters) shouldBeLessThan 0.5
             }
             vehicle.telemetry.armed.value shouldBe true
             vehicle.telemetry.mode.value!!.name shouldBe "BRAKE"
             events.value shouldContain MissionEvent.Started
-        }
+        } }
     }
 
     "RETURN_HOME after a cancelled flight switches to RTL and the copter lands at home" {
-        withVehicle(SimFlavor.ARDUCOPTER) { fleet, v, vehicle, sim ->
+        virtualRun { withVehicle(SimFlavor.ARDUCOPTER) { fleet, v, vehicle, sim ->
             val home = sim.config.home
             val mission = Mission("long", null, listOf(MissionStep.TakeOff(home.at(0, 0, 15.0), 0.deg), MissionStep.Waypoint(home.at(300, 0, 15.0)), MissionStep.Land(home.at(0, 0, 0.0))))
             val started = CompletableDeferred<Unit>()
             val flight = launch { fleet.fly(v, mission) { if (it == MissionEvent.StepStarted(1)) started.complete(Unit) } }
-            withTimeout(60.seconds) { started.await() }
+            withTimeout(10.minutes) { started.await() }
             withTimeout(1.seconds) { flight.cancelAndJoin() }
             withTimeout(2.seconds) { fleet.makeSafe(v, SafeState.RETURN_HOME) }
             vehicle.telemetry.mode.value!!.name shouldBe "RTL"
-            vehicle.action.awaitLanded(timeout = 60.seconds)
+            vehicle.action.awaitLanded(timeout = 20.minutes)
             vehicle.telemetry.position.value!!.location.distanceTo(home).meters shouldBeLessThan 3.0
-        }
+        } }
     }
 
     "a vehicle whose simulator stops mid-mission fails the flight with VehicleLost" {
-        withVehicle(SimFlavor.ARDUCOPTER, timeScale = 10.0) { fleet, v, _, sim ->
+        virtualRun { withVehicle(SimFlavor.ARDUCOPTER) { fleet, v, _, sim ->
             val home = sim.config.home
             val mission = Mission("lost", null, listOf(MissionStep.TakeOff(home.at(0, 0, 15.0), 0.deg), MissionStep.Waypoint(home.at(300, 0, 15.0)), MissionStep.Land(home.at(0, 0, 0.0))))
             val outcome = CompletableDeferred<Throwable?>()
             val flight = launch {
                 outcome.complete(runCatching { fleet.fly(v, mission) { if (it == MissionEvent.StepStarted(1)) sim.stop() } }.exceptionOrNull())
             }
-            val error = withTimeout(30.seconds) { outcome.await() }
+            val error = withTimeout(5.minutes) { outcome.await() }
             flight.join()
             (error is VehicleLost) shouldBe true
             (error as VehicleLost).systemId shouldBe v.id
-        }
+        } }
     }
 
     "a refused arm fails the flight with CommandRejected carrying the autopilot's reason" {
-        withVehicle(SimFlavor.ARDUCOPTER) { fleet, v, vehicle, sim ->
+        virtualRun { withVehicle(SimFlavor.ARDUCOPTER) { fleet, v, vehicle, sim ->
             vehicle.params.write("BATT_ARM_VOLT", 99.0)
             val home = sim.config.home
             val mission = Mission("refused", null, listOf(MissionStep.TakeOff(home.at(0, 0, 15.0), 0.deg), MissionStep.Land(home.at(0, 0, 0.0))))
             val events = ArrayList<MissionEvent>()
-            val e = shouldThrow<CommandRejected> { withTimeout(30.seconds) { fleet.fly(v, mission) { events += it } } }
+            val e = shouldThrow<CommandRejected> { withTimeout(10.minutes) { fleet.fly(v, mission) { events += it } } }
             e.command.command shouldBe MavCommands.COMPONENT_ARM_DISARM
             e.statusTexts.joinToString() shouldContain "Battery"
             events shouldBe listOf(MissionEvent.Uploaded(2))
             vehicle.telemetry.armed.value shouldBe false
-        }
+        } }
     }
 })

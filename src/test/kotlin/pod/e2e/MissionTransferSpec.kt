@@ -40,17 +40,19 @@ internal fun waypoints(count: Int, type: MissionType = MissionType.MISSION): Lis
     )
 }
 
-/** Runs [block] with a ground station and one simulated vehicle of [autopilot] connected to it. */
-private suspend fun withVehicle(autopilot: Autopilot, block: suspend (MavlinkVehicle, SimVehicle) -> Unit) = coroutineScope {
-    val gcs = GroundStation.open("udpin://127.0.0.1:0", this)
-    val sim = SimVehicle(SimVehicleConfig(systemId = 5, autopilot = autopilot, gcs = "udpout://127.0.0.1:${gcs.link.localPort}"))
-    try {
-        sim.start(this)
-        val vehicle = withTimeout(10.seconds) { gcs.vehicles.first { 5 in it } }.getValue(5)
-        withTimeout(60.seconds) { block(vehicle, sim) }
-    } finally {
-        sim.stop()
-        gcs.close()
+/** Runs [block] in virtual time with a ground station and one simulated vehicle of [autopilot] connected to it. */
+private fun withVehicle(autopilot: Autopilot, block: suspend (MavlinkVehicle, SimVehicle) -> Unit) = virtualRun {
+    coroutineScope {
+        val gcs = station(this)
+        val sim = vehicle(SimVehicleConfig(systemId = 5, autopilot = autopilot), gcs)
+        try {
+            sim.start(this)
+            val vehicle = withTimeout(10.seconds) { gcs.vehicles.first { 5 in it } }.getValue(5)
+            withTimeout(60.seconds) { block(vehicle, sim) }
+        } finally {
+            sim.stop()
+            gcs.close()
+        }
     }
 }
 

@@ -7,6 +7,7 @@ import io.kotest.matchers.doubles.shouldBeLessThan
 import io.kotest.matchers.shouldBe
 import kotlin.math.abs
 import kotlin.math.hypot
+import kotlin.time.Duration.Companion.minutes
 import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withTimeout
@@ -26,14 +27,14 @@ class PlaneMissionSpec : StringSpec({
 
     "a plane mission ending in an unlimited loiter completes once the plane circles the loiter point, not on its way there" {
         // 10×: position reports close enough together to see where the plane was when the run completed.
-        withVehicle(SimFlavor.ARDUPLANE, timeScale = 10.0) { fleet, v, vehicle, sim ->
+        virtualRun { withVehicle(SimFlavor.ARDUPLANE) { fleet, v, vehicle, sim ->
             val home = sim.config.home
             val center = home.at(800, 0, 50.0)
             // returnHomeAndLoiter's radius: the plane flies the tightest circle it can (~29 m in the simulator).
             val mission = Mission("loiter", null, listOf(MissionStep.TakeOff(home.at(0, 0, 40.0), 15.deg), MissionStep.Loiter(center, 15.m, LoiterDuration.Unlimited)))
             // Where the plane is when the run reports completion (at 30× it flies on 450 m a second).
             var atCompletion: pod.core.vehicle.Position? = null
-            withTimeout(60.seconds) { fleet.fly(v, mission) { if (it == MissionEvent.Completed) atCompletion = vehicle.telemetry.position.value } }
+            withTimeout(30.minutes) { fleet.fly(v, mission) { if (it == MissionEvent.Completed) atCompletion = vehicle.telemetry.position.value } }
             val p = atCompletion!!
             val d = p.location.distanceTo(center.copy(altitude = p.location.altitude)).meters
             d shouldBeLessThan 50.0
@@ -43,11 +44,11 @@ class PlaneMissionSpec : StringSpec({
             val radial = abs(p.velocityNorth.metersPerSecond * n + p.velocityEast.metersPerSecond * e) / hypot(n, e)
             radial shouldBeLessThan 0.4 * hypot(p.velocityNorth.metersPerSecond, p.velocityEast.metersPerSecond)
             vehicle.telemetry.mode.value!!.name shouldBe "AUTO"
-        }
+        } }
     }
 
     "a plane left disarmed in AUTO by an earlier program arms and flies the next mission (clearing sends it to RTL, where it cannot arm)" {
-        withVehicle(SimFlavor.ARDUPLANE, timeScale = 30.0) { fleet, v, vehicle, sim ->
+        virtualRun { withVehicle(SimFlavor.ARDUPLANE) { fleet, v, vehicle, sim ->
             val home = sim.config.home
             val earlier = Mission("earlier", null, listOf(MissionStep.TakeOff(home.at(0, 0, 40.0), 15.deg), MissionStep.Waypoint(home.at(0, 600, 40.0))))
             vehicle.mission.upload(MissionPlanner.plan(earlier, MissionFlavor.ARDUPLANE, home).items)
@@ -57,33 +58,33 @@ class PlaneMissionSpec : StringSpec({
             // Far enough that the flight outlasts a few heartbeats at 30×: a mission flown between two
             // heartbeats would never show AUTO to the start's confirmation.
             val next = Mission("next", null, listOf(MissionStep.TakeOff(home.at(0, 0, 40.0), 15.deg), MissionStep.Waypoint(home.at(3000, 0, 50.0))))
-            withTimeout(60.seconds) { fleet.fly(v, next) {} }
+            withTimeout(30.minutes) { fleet.fly(v, next) {} }
             collecting.cancel()
             texts shouldContain "Aircraft in auto without a running mission"
             vehicle.telemetry.armed.value shouldBe true
             vehicle.telemetry.position.value!!.relativeAltitude.meters shouldBeGreaterThan 30.0
-        }
+        } }
     }
 
     "replacing the mission of a plane flying its mission in AUTO holds it at height, replaces the mission and flies the new one" {
-        withVehicle(SimFlavor.ARDUPLANE, timeScale = 30.0) { fleet, v, vehicle, sim ->
+        virtualRun { withVehicle(SimFlavor.ARDUPLANE) { fleet, v, vehicle, sim ->
             val home = sim.config.home
             val first = Mission("first", null, listOf(MissionStep.TakeOff(home.at(0, 0, 40.0), 15.deg), MissionStep.Loiter(home.at(400, 0, 50.0), 80.m, LoiterDuration.Unlimited)))
-            withTimeout(60.seconds) { fleet.fly(v, first) {} }
+            withTimeout(30.minutes) { fleet.fly(v, first) {} }
             vehicle.telemetry.mode.value!!.name shouldBe "AUTO"
             var lowest = Double.MAX_VALUE
             val watching = launch { vehicle.telemetry.position.collect { p -> if (p != null) lowest = minOf(lowest, p.relativeAltitude.meters) } }
             val end = home.at(0, 600, 60.0)
             val second = Mission("second", null, listOf(MissionStep.Waypoint(home.at(300, 300, 60.0)), MissionStep.Loiter(end, 80.m, LoiterDuration.Unlimited)))
-            withTimeout(60.seconds) { fleet.fly(v, second) {} }
+            withTimeout(30.minutes) { fleet.fly(v, second) {} }
             watching.cancel()
             lowest shouldBeGreaterThan 40.0
             vehicle.telemetry.position.value!!.location.distanceTo(end.copy(altitude = vehicle.telemetry.position.value!!.location.altitude)).meters shouldBeLessThan 100.0
-        }
+        } }
     }
 
     "returnHomeAndLand on a plane (a waypoint over home, then land there) touches down near home, after a glide of a few degrees" {
-        withVehicle(SimFlavor.ARDUPLANE, timeScale = 30.0) { fleet, v, vehicle, sim ->
+        virtualRun { withVehicle(SimFlavor.ARDUPLANE) { fleet, v, vehicle, sim ->
             val home = sim.config.home
             val mission = Mission(
                 "home", null,
@@ -96,12 +97,12 @@ class PlaneMissionSpec : StringSpec({
             )
             val texts = ArrayList<String>()
             val collecting = launch { sim.statusTexts.collect { texts += it } }
-            withTimeout(90.seconds) { fleet.fly(v, mission) {} }
+            withTimeout(45.minutes) { fleet.fly(v, mission) {} }
             collecting.cancel()
             val slope = texts.first { it.startsWith("Landing glide slope") }.removePrefix("Landing glide slope ").removeSuffix(" degrees").toDouble()
             slope shouldBeLessThan 8.0
             vehicle.telemetry.landedState.value shouldBe LandedState.ON_GROUND
             vehicle.telemetry.position.value!!.location.distanceTo(home.copy(altitude = vehicle.telemetry.position.value!!.location.altitude)).meters shouldBeLessThan 60.0
-        }
+        } }
     }
 })

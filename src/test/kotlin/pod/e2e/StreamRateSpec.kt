@@ -18,10 +18,10 @@ import kotlin.time.Duration.Companion.seconds
 class StreamRateSpec : StringSpec({
 
     "the ground station asks each vehicle it finds for its configured stream rates" {
-        coroutineScope {
+        virtualRun { coroutineScope {
             val wanted = mapOf(33 to 10.0, 1 to 0.5)
-            val gcs = GroundStation.open("udpin://127.0.0.1:0", this, GroundStationConfig(streamRates = wanted))
-            val sim = SimVehicle(SimVehicleConfig(systemId = 9, gcs = "udpout://127.0.0.1:${gcs.link.localPort}"))
+            val gcs = station(this, GroundStationConfig(streamRates = wanted))
+            val sim = vehicle(SimVehicleConfig(systemId = 9), gcs)
             try {
                 // An ArduCopter streams nothing but HEARTBEAT until asked.
                 sim.streamRates.value.shouldBeEmpty()
@@ -32,15 +32,15 @@ class StreamRateSpec : StringSpec({
                 sim.stop()
                 gcs.close()
             }
-        }
+        } }
     }
 
     "an ArduCopter that is asked for nothing sends nothing but HEARTBEAT; the default station asks for what a mission needs, MISSION_CURRENT and the home included" {
-        coroutineScope {
-            val silent = GroundStation.open("udpin://127.0.0.1:0", this, GroundStationConfig(streamRates = emptyMap(), requestHome = false, requestPayloads = false))
-            val asking = GroundStation.open("udpin://127.0.0.1:0", this)
-            val quiet = SimVehicle(SimVehicleConfig(systemId = 7, gcs = "udpout://127.0.0.1:${silent.link.localPort}"))
-            val asked = SimVehicle(SimVehicleConfig(systemId = 8, gcs = "udpout://127.0.0.1:${asking.link.localPort}"))
+        virtualRun { coroutineScope {
+            val silent = station(this, GroundStationConfig(streamRates = emptyMap(), requestHome = false, requestPayloads = false))
+            val asking = station(this)
+            val quiet = vehicle(SimVehicleConfig(systemId = 7), silent)
+            val asked = vehicle(SimVehicleConfig(systemId = 8), asking)
             try {
                 quiet.start(this)
                 asked.start(this)
@@ -62,6 +62,6 @@ class StreamRateSpec : StringSpec({
                 silent.close()
                 asking.close()
             }
-        }
+        } }
     }
 })

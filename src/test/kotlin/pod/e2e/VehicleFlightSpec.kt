@@ -5,6 +5,7 @@ import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.doubles.shouldBeLessThan
 import io.kotest.matchers.shouldBe
 import kotlin.math.abs
+import kotlin.time.Duration.Companion.minutes
 import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.first
@@ -27,7 +28,7 @@ import pod.sim.SimVehicleConfig
 class VehicleFlightSpec : StringSpec({
 
     "an ArduPilot copter flies takeoff, five waypoints, two loiter turns and RTL in order, and ends landed and disarmed at home" {
-        Flights.flying(SimVehicleConfig(systemId = 31, timeScale = 20.0)) { vehicle, _ ->
+        virtualRun { flying(SimVehicleConfig(systemId = 31)) { vehicle, _ ->
             val home = SimVehicleConfig.DEFAULT_HOME
             val mission = Flights.copterSurvey(home)
             vehicle.mission.upload(mission)
@@ -35,18 +36,18 @@ class VehicleFlightSpec : StringSpec({
             Flights.keepArmedOnGround(vehicle)
             vehicle.action.arm()
             vehicle.action.startMission()
-            vehicle.action.awaitLanded(timeout = 60.seconds)
+            vehicle.action.awaitLanded(timeout = 20.minutes)
             recording.cancel()
             reached shouldBe (1..8).toList()
             val end = vehicle.telemetry.position.value!!
             end.location.distanceTo(home).meters shouldBeLessThan 3.0
             vehicle.telemetry.landedState.value shouldBe LandedState.ON_GROUND
             vehicle.telemetry.armed.value shouldBe false
-        }
+        } }
     }
 
     "an ArduPilot plane flies its circuit and lands through the landing sequence, disarmed on the runway" {
-        Flights.flying(SimVehicleConfig(systemId = 32, type = VehicleType.FIXED_WING, timeScale = 20.0)) { vehicle, _ ->
+        virtualRun { flying(SimVehicleConfig(systemId = 32, type = VehicleType.FIXED_WING)) { vehicle, _ ->
             val home = SimVehicleConfig.DEFAULT_HOME
             vehicle.mission.upload(Flights.planeCircuit(home))
             // ArduPlane arms a mission holding DO_LAND_START only with RTL_AUTOLAND set (AP_Arming_Plane::mission_checks).
@@ -56,16 +57,16 @@ class VehicleFlightSpec : StringSpec({
             vehicle.action.arm()
             vehicle.action.startMission()
             // It gets airborne on its own takeoff item.
-            withTimeout(30.seconds) { vehicle.telemetry.landedState.first { it == LandedState.IN_AIR } }
-            vehicle.action.awaitLanded(timeout = 90.seconds)
+            withTimeout(10.minutes) { vehicle.telemetry.landedState.first { it == LandedState.IN_AIR } }
+            vehicle.action.awaitLanded(timeout = 30.minutes)
             recording.cancel()
             reached shouldBe listOf(1, 2, 3, 4, 6, 7)
             vehicle.telemetry.position.value!!.location.distanceTo(home).meters shouldBeLessThan 60.0
-        }
+        } }
     }
 
     "camera items in a mission are photographed where the vehicle is when it reaches them" {
-        Flights.flying(SimVehicleConfig(systemId = 34, autopilot = Autopilot.PX4, timeScale = 20.0)) { vehicle, sim ->
+        virtualRun { flying(SimVehicleConfig(systemId = 34, autopilot = Autopilot.PX4)) { vehicle, sim ->
             val home = SimVehicleConfig.DEFAULT_HOME
             val a = home.offset(30.m, 0.m)
             val b = home.offset(30.m, 30.m)
@@ -81,28 +82,28 @@ class VehicleFlightSpec : StringSpec({
             Flights.keepArmedOnGround(vehicle)
             vehicle.action.arm()
             vehicle.action.startMission()
-            vehicle.action.awaitLanded(timeout = 60.seconds)
+            vehicle.action.awaitLanded(timeout = 20.minutes)
             val photos = sim.photos.value
             photos.map { it.missionSeq } shouldBe listOf(2, 4)
             photos[0].location.distanceTo(a).meters shouldBeLessThan 11.0 // PX4's NAV_ACC_RAD is 10 m
             photos[1].location.distanceTo(b).meters shouldBeLessThan 11.0
-        }
+        } }
     }
 
     for (autopilot in listOf(Autopilot.ARDUPILOT, Autopilot.PX4)) {
         "a ${autopilot.name} copter paused mid-mission holds position and altitude, and continues at the same item" {
-            Flights.flying(SimVehicleConfig(systemId = 33, autopilot = autopilot, timeScale = 10.0)) { vehicle, _ ->
+            virtualRun { flying(SimVehicleConfig(systemId = 33, autopilot = autopilot)) { vehicle, _ ->
                 val home = SimVehicleConfig.DEFAULT_HOME
                 vehicle.mission.upload(Flights.copterSurvey(home))
                 Flights.keepArmedOnGround(vehicle)
                 vehicle.action.arm()
                 vehicle.action.startMission()
-                withTimeout(60.seconds) { vehicle.telemetry.missionCurrent.first { it == 3 } }
+                withTimeout(20.minutes) { vehicle.telemetry.missionCurrent.first { it == 3 } }
                 vehicle.action.pauseMission()
                 // Every GLOBAL_POSITION_INT (4 Hz), not the StateFlow, which skips repeats of a vehicle standing still.
                 val reports = vehicle.messages.mapNotNull { it.message as? GlobalPositionInt }.map { Location(it.lat() / 1e7, it.lon() / 1e7, (it.relativeAlt() / 1000.0).m) }
                 // Reports come at 4 Hz of the vehicle's own time: settled is 2 s of them within 0.3 m, held is the next 30 s.
-                val settled = withTimeout(30.seconds) {
+                val settled = withTimeout(10.minutes) {
                     val window = ArrayDeque<Location>()
                     reports.first { p ->
                         window.addLast(p)
@@ -110,7 +111,7 @@ class VehicleFlightSpec : StringSpec({
                         window.size == 8 && window.all { it.distanceTo(p).meters < 0.3 }
                     }
                 }
-                val held = withTimeout(30.seconds) { reports.take(120).toList() }
+                val held = withTimeout(10.minutes) { reports.take(120).toList() }
                 for (p in held) {
                     p.distanceTo(settled).meters shouldBeLessThan 1.0
                     abs(p.altitude.meters - settled.altitude.meters) shouldBeLessThan 0.5
@@ -118,10 +119,10 @@ class VehicleFlightSpec : StringSpec({
                 vehicle.telemetry.missionCurrent.value shouldBe 3
                 val (reached, recording) = recordReached(vehicle)
                 vehicle.action.continueMission()
-                withTimeout(60.seconds) { vehicle.telemetry.missionCurrent.first { it == 4 } }
+                withTimeout(20.minutes) { vehicle.telemetry.missionCurrent.first { it == 4 } }
                 recording.cancel()
                 reached.first() shouldBe 3
-            }
+            } }
         }
     }
 })

@@ -13,6 +13,7 @@ import kotlinx.coroutines.flow.filterNotNull
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.withTimeout
 import pod.core.engine.Engine
+import pod.core.engine.EngineConfig
 import pod.core.engine.PickRequest
 import pod.core.vehicle.VehicleType
 import pod.mavlink.GroundStation
@@ -30,15 +31,15 @@ import kotlin.time.Duration.Companion.seconds
 class VehicleReadinessSpec : StringSpec({
 
     "a vehicle picked on a real link has its home and position, even when its home comes seconds after its first heartbeat" {
-        coroutineScope {
-            val gcs = GroundStation.open("udpin://127.0.0.1:0", this)
-            val sim = SimVehicle(SimVehicleConfig(systemId = 61, positionReadyAfter = 3.seconds, gcs = "udpout://127.0.0.1:${gcs.link.localPort}"))
+        virtualRun { coroutineScope {
+            val gcs = station(this)
+            val sim = vehicle(SimVehicleConfig(systemId = 61, positionReadyAfter = 3.seconds), gcs)
             try {
                 sim.start(this)
                 val platform = MavlinkPlatform(gcs)
                 val heard = withTimeout(5.seconds) { gcs.vehicles.first { 61 in it } }.getValue(61)
                 withTimeout(5.seconds) { platform.initialising.first { 61 in it } }.getValue(61) shouldContain "home"
-                val home = Engine(platform).run {
+                val home = Engine(platform, EngineConfig(timeSource = timebase.clock)).run {
                     val v = pick(PickRequest(count = 1, timeout = 10.seconds))[0]
                     v.position.value.shouldNotBeNull()
                     v.home.value // what `v.home.value!!` in the README reads
@@ -50,12 +51,12 @@ class VehicleReadinessSpec : StringSpec({
                 sim.stop()
                 gcs.close()
             }
-        }
+        } }
     }
 
     "arming a vehicle whose sensors are still settling waits, saying why, and arms once they are ready" {
         val config = SimVehicleConfig(systemId = 62, type = VehicleType.FIXED_WING, positionReadyAfter = 1.seconds, sensorsReadyAfter = 4.seconds)
-        Flights.flying(config) { v, _ ->
+        virtualRun { flying(config) { v, _ ->
             coroutineScope {
                 val shown = async(start = CoroutineStart.UNDISPATCHED) { v.action.waitingFor.filterNotNull().first() }
                 withTimeout(15.seconds) { v.action.arm() }
@@ -63,15 +64,15 @@ class VehicleReadinessSpec : StringSpec({
                 shown.await() shouldBe "Arm: Accels inconsistent"
                 v.action.waitingFor.value shouldBe null
             }
-        }
+        } }
     }
 
     "a refusal that waiting cannot clear fails at once with the autopilot's reason, sent after its COMMAND_ACK" {
-        Flights.flying(SimVehicleConfig(systemId = 63, initialCharge = 0.05)) { v, _ ->
+        virtualRun { flying(SimVehicleConfig(systemId = 63, initialCharge = 0.05)) { v, _ ->
             val error = shouldThrow<CommandRejected> { withTimeout(3.seconds) { v.action.arm() } }
             error.statusTexts shouldContain "PreArm: Battery 1 below minimum arming voltage"
             error.message!! shouldContain "FAILED: PreArm: Battery 1 below minimum arming voltage"
             error.attempts shouldBe 1
-        }
+        } }
     }
 })

@@ -6,8 +6,11 @@ import pod.core.engine.EngineConfig
 import pod.core.engine.EngineEvent
 import pod.core.engine.Program
 import pod.core.mission.Mission
+import pod.core.time.Timebase
 import pod.launch.map.SvgMap
+import pod.mavlink.GroundStationConfig
 import pod.launch.map.Tracks
+import pod.sim.LinkOpener
 import pod.sim.SimFlavor
 import pod.sim.SimPlatform
 import java.nio.file.Path
@@ -28,6 +31,12 @@ public class SimRecord(
  * [onLine] as it happens, writes an SVG map of the planned missions and flown tracks to [map] (if
  * given) and returns the program's result with a [SimRecord] of the run. The fleet is stopped
  * afterwards, however the program ends.
+ *
+ * The engine, the ground station and the vehicles read [timebase] and the fleet's links are opened
+ * with [openLink]: given a test scheduler's timebase and a [pod.mavlink.link.MemoryNetwork]
+ * (`LinkOpener.memory(network)`) and a [timeScale] of 1, the whole run is in virtual time,
+ * deterministic, with no real-time deadline. Call it from a coroutine on [timebase]'s dispatcher.
+ * [station] configures the fleet's ground station (a longer `lostAfter` for a lossy link, say).
  */
 public suspend fun <T> simulate(
     flavors: List<SimFlavor>,
@@ -35,16 +44,19 @@ public suspend fun <T> simulate(
     onLine: (String) -> Unit = {},
     onEvent: (EngineEvent) -> Unit = {},
     map: Path? = null,
+    timebase: Timebase = Timebase.System,
+    openLink: LinkOpener = LinkOpener.Udp,
+    station: GroundStationConfig = GroundStationConfig(),
     program: suspend Program.(SimPlatform) -> T,
 ): Pair<T, SimRecord> = coroutineScope {
-    val sim = SimPlatform.start(this, flavors, timeScale)
+    val sim = SimPlatform.start(this, flavors, timeScale, timebase = timebase, openLink = openLink, station = station)
     try {
         val names = sim.platform.vehicles.value.associate { it.id to it.name }
         val events = mutableListOf<EngineEvent>()
         val tracks = Tracks()
         val recording = tracks.record(sim, this)
         try {
-            val result = Engine(sim, EngineConfig()).runShowing(
+            val result = Engine(sim, EngineConfig(timeSource = timebase.clock)).runShowing(
                 names = { names[it] ?: "vehicle $it" },
                 onLine = onLine,
                 onEvent = { event ->

@@ -1,6 +1,7 @@
 package pod.sim
 
 import kotlinx.coroutines.CoroutineScope
+import pod.core.time.Timebase
 import pod.core.units.m
 import pod.mavlink.link.LinkAddress
 
@@ -29,6 +30,8 @@ public class SimFleet private constructor(
          *
          * When [base] listens (`udpin://host:port`, port not 0), vehicle i listens on port + i, as
          * SITL's instances each take their own port: one port cannot be bound twice.
+         *
+         * Every vehicle reads [timebase] and opens its link with [openLink] (see [SimVehicle]).
          */
         public suspend fun start(
             count: Int,
@@ -36,6 +39,8 @@ public class SimFleet private constructor(
             base: SimVehicleConfig = SimVehicleConfig(systemId = 1),
             firstSystemId: Int = base.systemId,
             spacing: Double = 10.0,
+            timebase: Timebase = Timebase.System,
+            openLink: LinkOpener = LinkOpener.Udp,
         ): SimFleet {
             require(count in 1..254) { "count must be in 1..254, was $count" }
             require(firstSystemId in 1..254 && firstSystemId + count - 1 <= 254) {
@@ -52,6 +57,8 @@ public class SimFleet private constructor(
                         gcs = if (listen != null && listen.port != 0) listen.copy(port = listen.port + i).toString() else base.gcs,
                         home = base.home.offset(north = 0.m, east = (spacing * i).m),
                     ),
+                    timebase = timebase,
+                    openLink = openLink,
                 )
             }
             val fleet = SimFleet(vehicles)

@@ -8,12 +8,15 @@ import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withTimeout
 import pod.core.platform.Platform
+import pod.core.time.Timebase
 import pod.core.units.Distance
 import pod.core.units.Location
 import pod.core.units.m
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleType
 import pod.mavlink.GroundStation
+import pod.mavlink.GroundStationConfig
+import pod.mavlink.link.LinkAddress
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.executor.ExecutorTiming
 import pod.mavlink.platform.MavlinkPlatform
@@ -75,6 +78,11 @@ public class SimPlatform private constructor(
          * listening on a free loopback port. Waits up to [readyTimeout] until each vehicle is heard
          * with a position and a 3D fix, then turns off the disarm of a vehicle armed on the ground
          * (at an accelerated [timeScale] it would pass before a heartbeat confirms the arming).
+         *
+         * The station and the vehicles read [timebase] and open their links with [openLink]: on a
+         * test scheduler's timebase and a [pod.mavlink.link.MemoryNetwork] the whole fleet runs in
+         * virtual time (pass a [timeScale] of 1 there). [station] configures the ground station
+         * (its timebase is replaced by [timebase]).
          */
         public suspend fun start(
             scope: CoroutineScope,
@@ -85,12 +93,15 @@ public class SimPlatform private constructor(
             firstSystemId: Int = 1,
             payloads: ((MavlinkVehicle) -> Set<String>)? = null,
             readyTimeout: Duration = 30.seconds,
+            timebase: Timebase = Timebase.System,
+            openLink: LinkOpener = LinkOpener.Udp,
+            station: GroundStationConfig = GroundStationConfig(),
         ): SimPlatform {
             require(flavors.size in 1..254) { "flavors must name 1..254 vehicles, was ${flavors.size}" }
             require(firstSystemId in 1..254 && firstSystemId + flavors.size - 1 <= 254) { "system ids $firstSystemId..${firstSystemId + flavors.size - 1} must lie within 1..254" }
             require(timeScale > 0 && timeScale <= 1000) { "timeScale must be in (0, 1000], was $timeScale" }
             require(spacing.meters > 0) { "spacing must be > 0, was $spacing" }
-            val station = GroundStation.open("udpin://127.0.0.1:0", scope)
+            val gcs = GroundStation.open(openLink.open(LinkAddress.parse("udpin://127.0.0.1:0")), scope, station.copy(timebase = timebase))
             val simulated = ArrayList<SimVehicle>()
             try {
                 val positions = SimLayout.ring(home, flavors.size, spacing)
@@ -98,22 +109,24 @@ public class SimPlatform private constructor(
                     val sim = SimVehicle(
                         SimVehicleConfig(
                             systemId = firstSystemId + i, type = flavor.type, autopilot = flavor.autopilot, home = positions[i],
-                            gcs = "udpout://127.0.0.1:${station.link.localPort}", timeScale = timeScale,
+                            gcs = "udpout://127.0.0.1:${gcs.link.localPort}", timeScale = timeScale,
                         ),
+                        timebase = timebase,
+                        openLink = openLink,
                     )
                     simulated += sim
                     sim.start(scope)
                 }
                 withTimeout(readyTimeout) {
-                    val heard = station.vehicles.first { v -> simulated.all { it.config.systemId in v } }
+                    val heard = gcs.vehicles.first { v -> simulated.all { it.config.systemId in v } }
                     coroutineScope {
                         for (sim in simulated) launch { ready(heard.getValue(sim.config.systemId)) }
                     }
                 }
-                return SimPlatform(simulated, station, MavlinkPlatform(station, timeScale, ExecutorTiming(), payloads))
+                return SimPlatform(simulated, gcs, MavlinkPlatform(gcs, timeScale, ExecutorTiming(), payloads))
             } catch (e: Throwable) {
                 simulated.forEach { it.stop() }
-                station.close()
+                gcs.close()
                 throw e
             }
         }

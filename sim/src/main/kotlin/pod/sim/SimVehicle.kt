@@ -16,10 +16,8 @@ import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.nanoseconds
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.DurationUnit
-import kotlin.time.TimeSource
 import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.CoroutineScope
-import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.ExperimentalCoroutinesApi
 import kotlinx.coroutines.Job
 import kotlinx.coroutines.NonCancellable
@@ -46,6 +44,8 @@ import pod.mavlink.codec.MavFrame
 import pod.mavlink.codec.MessageCodec
 import pod.mavlink.command.MavCommands.REQUEST_MESSAGE
 import pod.mavlink.command.MavCommands.SET_MESSAGE_INTERVAL
+import pod.core.time.Timebase
+import pod.mavlink.link.LinkAddress
 import pod.mavlink.link.MavlinkLink
 import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionMessage
@@ -62,17 +62,24 @@ import pod.sim.autopilot.SimOutput
  * with MAV_CMD_SET_MESSAGE_INTERVAL, both in the vehicle's own (simulated) time, as SITL run with
  * a speed-up sends them.
  *
- * All its coroutines run one at a time (a single-threaded view of the default dispatcher), so its
- * state needs no locks. [start] and [stop] may be called repeatedly: a restarted vehicle comes
- * back from a new local port, as a rebooted autopilot would.
+ * All its coroutines run one at a time (a single-threaded view of [timebase]'s dispatcher), so its
+ * state needs no locks, and every time reading and delay follows [timebase]'s clock: on a test
+ * scheduler's timebase with links from a [pod.mavlink.link.MemoryNetwork] ([openLink]) it flies in
+ * virtual time (use a [SimVehicleConfig.timeScale] of 1 there: vehicle time is then virtual time).
+ * [start] and [stop] may be called repeatedly: a restarted vehicle comes back from a new local
+ * port, as a rebooted autopilot would.
  */
 public class SimVehicle(
     /** Identity, behaviour and destination. */
     public val config: SimVehicleConfig,
     private val codec: MessageCodec = MessageCodec.Default,
+    /** The clock it reads and the dispatcher its coroutines run on. */
+    public val timebase: Timebase = Timebase.System,
+    /** Opens the vehicle's link to [SimVehicleConfig.gcs]: UDP sockets by default. */
+    private val openLink: LinkOpener = LinkOpener.Udp,
 ) {
     private val encoder = FrameEncoder(codec)
-    private val bootedAt = TimeSource.Monotonic.markNow()
+    private val bootedAt = timebase.clock.markNow()
     private val messages = SimMessages(config, bootedAt)
     private val sequences = SequenceNumbers()
     private val _state: MutableStateFlow<SimState>
@@ -151,10 +158,10 @@ public class SimVehicle(
     @OptIn(ExperimentalCoroutinesApi::class)
     public suspend fun start(parent: CoroutineScope) {
         check(scope == null) { "vehicle ${config.systemId} is already running" }
-        val link = MavlinkLink.open(config.gcs)
+        val link = openLink.open(LinkAddress.parse(config.gcs))
         val scope = CoroutineScope(
             parent.coroutineContext + SupervisorJob(parent.coroutineContext.job) +
-                Dispatchers.Default.limitedParallelism(1) + CoroutineName("sim-${config.systemId}"),
+                timebase.dispatcher.limitedParallelism(1) + CoroutineName("sim-${config.systemId}"),
         )
         this.link = link
         this.scope = scope
@@ -174,17 +181,17 @@ public class SimVehicle(
     }
 
     /**
-     * Integrates at a fixed simulated step: each tick runs as many steps as the wall-clock time
+     * Integrates at a fixed simulated step: each tick runs as many steps as the [timebase] time
      * elapsed × [SimVehicleConfig.timeScale] calls for, at most [MAX_STEPS_PER_TICK] (a stalled
      * machine drops simulated time rather than freezing in a catch-up loop).
      */
     private suspend fun physics() {
         val step = config.physicsStep.toDouble(DurationUnit.SECONDS)
-        var last = TimeSource.Monotonic.markNow()
+        var last = timebase.clock.markNow()
         var owed = 0.0
         while (true) {
             delay(TICK)
-            val now = TimeSource.Monotonic.markNow()
+            val now = timebase.clock.markNow()
             owed += (now - last).toDouble(DurationUnit.SECONDS) * config.timeScale
             last = now
             var steps = 0

@@ -13,7 +13,7 @@ import pod.mavlink.link.MavlinkLink
 import java.net.InetAddress
 import java.net.UnknownHostException
 import kotlin.random.Random
-import kotlin.time.TimeSource
+import pod.core.time.Timebase
 
 /**
  * A UDP relay on loopback that sits between two MAVLink endpoints, A and B, and applies [aToB] to
@@ -32,6 +32,8 @@ import kotlin.time.TimeSource
  *
  * Both directions draw from their own [FaultModel], seeded from [seed], so a run is repeatable as
  * far as the traffic itself is. Only loopback addresses are accepted: this is a test instrument.
+ * Its clock and the dispatcher it relays on are [timebase]'s. (For faults without sockets, put
+ * [FaultConditions] on a [pod.mavlink.link.MemoryNetwork].)
  */
 public class LossyRelay(
     /** Side A. */
@@ -46,6 +48,8 @@ public class LossyRelay(
     public val seed: Long = 0,
     /** Most datagrams each direction keeps waiting, in its inbox and in its schedule each. */
     public val queueCapacity: Int = DEFAULT_QUEUE_CAPACITY,
+    /** The clock that times deliveries and the dispatcher the relay runs on. */
+    public val timebase: Timebase = Timebase.System,
 ) {
     /** Parses [a] and [b] as connection strings (see [LinkAddress.parse]). */
     public constructor(
@@ -55,7 +59,8 @@ public class LossyRelay(
         bToA: LinkFaults = LinkFaults.None,
         seed: Long = 0,
         queueCapacity: Int = DEFAULT_QUEUE_CAPACITY,
-    ) : this(LinkAddress.parse(a), LinkAddress.parse(b), aToB, bToA, seed, queueCapacity)
+        timebase: Timebase = Timebase.System,
+    ) : this(LinkAddress.parse(a), LinkAddress.parse(b), aToB, bToA, seed, queueCapacity, timebase)
 
     init {
         requireLoopbackUdp("a", a)
@@ -96,7 +101,7 @@ public class LossyRelay(
         linkA = sideA
         linkB = sideB
         val seeds = Random(seed)
-        val started = TimeSource.Monotonic.markNow()
+        val started = timebase.clock.markNow()
         val clock = { started.elapsedNow() }
         val forward = RelayLeg(FaultModel(aToB, seeds.nextLong()), queueCapacity, clock) { leg ->
             _counters.update { it.copy(aToB = leg) }
@@ -104,7 +109,7 @@ public class LossyRelay(
         val backward = RelayLeg(FaultModel(bToA, seeds.nextLong()), queueCapacity, clock) { leg ->
             _counters.update { it.copy(bToA = leg) }
         }
-        val relaying = scope.launch(CoroutineName("LossyRelay $a <-> $b")) {
+        val relaying = scope.launch(timebase.dispatcher + CoroutineName("LossyRelay $a <-> $b")) {
             launch { sideA.receive { _, bytes -> forward.accept(bytes) } }
             launch { sideB.receive { _, bytes -> backward.accept(bytes) } }
             launch { forward.run(sideB) }

@@ -1,0 +1,138 @@
+package pod.e2e
+
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.test.StandardTestDispatcher
+import kotlinx.coroutines.test.TestScope
+import kotlinx.coroutines.test.runTest
+import pod.core.engine.EngineEvent
+import pod.core.engine.Program
+import pod.core.platform.PlatformVehicle
+import pod.core.time.Timebase
+import pod.launch.SimRecord
+import pod.launch.simulate
+import pod.mavlink.GroundStation
+import pod.mavlink.GroundStationConfig
+import pod.mavlink.MavlinkVehicle
+import pod.mavlink.link.LinkAddress
+import pod.mavlink.link.MemoryNetwork
+import pod.sim.LinkOpener
+import pod.sim.SimFlavor
+import pod.sim.SimPlatform
+import pod.sim.SimVehicle
+import pod.sim.SimVehicleConfig
+import pod.sim.fault.FaultConditions
+import pod.sim.fault.LinkCounters
+import pod.sim.fault.LinkFaults
+import java.util.concurrent.ConcurrentHashMap
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.minutes
+
+/**
+ * One seeded virtual world for end-to-end behaviour: kotlinx-coroutines-test's scheduler as the
+ * clock of the engine, the ground station and every simulated vehicle, all on one [MemoryNetwork].
+ * Datagrams towards a listening link (the ground station's `udpin`) suffer [up], all others
+ * [down], each route from its own [FaultConditions] seeded from [seed]. Vehicles run at time
+ * scale 1: vehicle time is virtual time, so bounds here are in vehicle time and cost no wall time.
+ */
+internal class VirtualFleet(
+    val test: TestScope,
+    val seed: Long,
+    up: LinkFaults,
+    down: LinkFaults,
+) {
+    /** The test scheduler's clock and a dispatcher on it. */
+    val timebase = Timebase(test.testScheduler.timeSource, StandardTestDispatcher(test.testScheduler))
+
+    private val listening: MutableSet<Int> = ConcurrentHashMap.newKeySet()
+
+    private val routes = FaultConditions.byDirection(seed, up, down) { it in listening }
+    private val models: MutableList<Pair<Boolean, FaultConditions>> = java.util.Collections.synchronizedList(ArrayList())
+
+    /** The in-memory network everything talks over. */
+    val network = MemoryNetwork(test.backgroundScope, timebase) { from, to ->
+        routes(from, to)?.also { models += (to.port in listening) to it }
+    }
+
+    /** What the faults did so far to datagrams towards the ground ([towardsGround]) or away from it, summed over routes. */
+    fun counters(towardsGround: Boolean): LinkCounters = synchronized(models) {
+        models.filter { it.first == towardsGround }.map { it.second.model.counters }
+            .fold(LinkCounters()) { a, b -> LinkCounters(a.sent + b.sent, a.dropped + b.dropped, a.duplicated + b.duplicated, a.reordered + b.reordered, a.corrupted + b.corrupted, a.delivered + b.delivered) }
+    }
+
+    /** Opens links on [network], noting the ports that listen (the ground side of [up]). */
+    val openLink = LinkOpener { address ->
+        network.open(address).also { if (address is LinkAddress.UdpIn) listening += it.localPort }
+    }
+
+    /** [pod.launch.simulate] on this world: [flavors] at time scale 1, the engine on the virtual clock. */
+    suspend fun <T> simulate(
+        flavors: List<SimFlavor>,
+        onEvent: (EngineEvent) -> Unit = {},
+        station: GroundStationConfig = GroundStationConfig(),
+        program: suspend Program.(SimPlatform) -> T,
+    ): Pair<T, SimRecord> = simulate(flavors, timeScale = 1.0, onEvent = onEvent, timebase = timebase, openLink = openLink, station = station, program = program)
+
+    /** A started [SimPlatform] of [flavors] on this world (see [SimPlatform.start]). */
+    suspend fun platform(scope: CoroutineScope, flavors: List<SimFlavor>): SimPlatform =
+        SimPlatform.start(scope, flavors, timeScale = 1.0, timebase = timebase, openLink = openLink)
+
+    /** One vehicle of [flavor] on a fresh platform; everything stops afterwards. */
+    suspend fun withVehicle(
+        flavor: SimFlavor,
+        block: suspend CoroutineScope.(SimPlatform, PlatformVehicle, MavlinkVehicle, SimVehicle) -> Unit,
+    ) = coroutineScope {
+        val fleet = platform(this, listOf(flavor))
+        try {
+            val v = fleet.vehicles.value.single()
+            block(fleet, v, fleet.platform.mavlink(v), fleet.simulated.single())
+        } finally {
+            fleet.close()
+        }
+    }
+
+    /** A ground station on this world listening on a fresh port. */
+    fun station(scope: CoroutineScope, config: GroundStationConfig = GroundStationConfig()): GroundStation =
+        GroundStation.open(network.open("udpin://127.0.0.1:0").also { listening += it.localPort }, scope, config.copy(timebase = timebase))
+
+    /** A vehicle of [config] (time scale 1) sending to [gcs] on this world; not started. */
+    fun vehicle(config: SimVehicleConfig, gcs: GroundStation): SimVehicle =
+        SimVehicle(config.copy(gcs = "udpout://127.0.0.1:${gcs.link.localPort}", timeScale = 1.0), timebase = timebase, openLink = openLink)
+
+    /**
+     * [Flights.flying] on this world: one vehicle of [config] and a station, [block] once the
+     * vehicle can arm; both stop afterwards.
+     */
+    suspend fun flying(
+        config: SimVehicleConfig,
+        station: GroundStationConfig = GroundStationConfig(),
+        block: suspend CoroutineScope.(MavlinkVehicle, SimVehicle) -> Unit,
+    ) = coroutineScope {
+        val gcs = station(this, station)
+        val sim = vehicle(config, gcs)
+        try {
+            sim.start(this)
+            block(Flights.vehicle(gcs, config.systemId), sim)
+        } finally {
+            sim.stop()
+            gcs.close()
+        }
+    }
+}
+
+/**
+ * Runs [block] in a fresh [VirtualFleet] under `runTest`. [timeout] is runTest's real-time guard
+ * against a hang, not a bound on behaviour.
+ */
+internal fun virtualRun(
+    seed: Long = 1,
+    up: LinkFaults = LinkFaults.None,
+    down: LinkFaults = LinkFaults.None,
+    timeout: Duration = 3.minutes,
+    block: suspend VirtualFleet.() -> Unit,
+) = runTest(timeout = timeout) {
+    VirtualFleet(this, seed, up, down).block()
+}
+
+/** The engine's events as comparable lines (an error compares by its type and message). */
+internal fun List<EngineEvent>.trace(): List<String> = map { it.toString() }
