@@ -22,25 +22,36 @@ import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.flow.take
 import kotlinx.coroutines.flow.toList
 import kotlinx.coroutines.withTimeout
+import kotlinx.coroutines.test.StandardTestDispatcher
+import kotlinx.coroutines.test.runTest
+import pod.core.time.Timebase
 import pod.core.vehicle.Severity
+import pod.mavlink.link.MemoryNetwork
 import pod.core.vehicle.StatusText
 import pod.mavlink.command.MavCommands
 import pod.mavlink.command.ScriptedVehicle
 
-/** A ground station and one scripted vehicle that also sees the station's own requests. */
-private suspend fun withScripted(
+/**
+ * A ground station and one scripted vehicle that also sees the station's own requests, on a
+ * [MemoryNetwork] in virtual time: the request rounds' timing is the subject, not the socket.
+ */
+private fun withScripted(
     config: GroundStationConfig,
     answer: suspend (Any) -> List<Any>,
     block: suspend CoroutineScope.(MavlinkVehicle, ScriptedVehicle) -> Unit,
-) = coroutineScope {
-    val gcs = GroundStation.open("udpin://127.0.0.1:0", this, config)
-    val scripted = ScriptedVehicle.start(this, gcs.link.localPort, seeStationRequests = true, answer = answer)
-    try {
-        block(withTimeout(5.seconds) { gcs.vehicles.first { 1 in it } }.getValue(1), scripted)
-    } finally {
-        scripted.close()
-        gcs.close()
-        coroutineContext[kotlinx.coroutines.Job]?.children?.forEach { it.cancel() }
+) = runTest {
+    val timebase = Timebase(testScheduler.timeSource, StandardTestDispatcher(testScheduler))
+    coroutineScope {
+        val network = MemoryNetwork(this, timebase)
+        val gcs = GroundStation.open(network.open("udpin://127.0.0.1:14550"), this, config.copy(timebase = timebase))
+        val scripted = ScriptedVehicle.start(this, network.open("udpout://127.0.0.1:14550"), seeStationRequests = true, answer = answer)
+        try {
+            block(withTimeout(5.seconds) { gcs.vehicles.first { 1 in it } }.getValue(1), scripted)
+        } finally {
+            scripted.close()
+            gcs.close()
+            coroutineContext[kotlinx.coroutines.Job]?.children?.forEach { it.cancel() }
+        }
     }
 }
 

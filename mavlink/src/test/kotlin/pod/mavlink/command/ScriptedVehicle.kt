@@ -19,7 +19,7 @@ import pod.mavlink.codec.MessageCodec
 import pod.mavlink.link.MavlinkLink
 
 /**
- * A vehicle on a real loopback socket whose answers a test scripts: for every message the ground
+ * A vehicle on a link (a loopback socket or a memory network) whose answers a test scripts: for every message the ground
  * station sends it calls [answer] and sends back what that returns (the station's own stream
  * requests only when started with seeStationRequests). Heartbeats go out every 100 ms until
  * [silence] is called.
