@@ -27,7 +27,7 @@ for part in "${parts[@]}"; do
           --rounds 200,50,20 --warmup 20,5,3 --lossy-rounds 30 --lossy-warmup 3 --pod-warmup 200 \
           --python "$py" --script "$dir/bench/pymavlink_command.py" --peer-log "$out/command-peers-$side.log" \
           --json "$out/command-$side.json" --markdown "$out/command-$side.md" ;;
-      mission) timeout 1200 java -Xms512m -Xmx512m -cp "$cp" pod.bench.mission.MissionBenchKt --sizes 1000 --losses 0 \
+      mission) timeout 1200 java -Xms512m -Xmx512m -cp "$cp" pod.bench.mission.MissionBenchKt --sizes 1000,1000,1000 --losses 0 \
           --flavours PX4,ARDUPILOT --success-runs 0 --floor-warmup 100 --floor-samples 200 \
           --python "$py" --mavsdk-script "$dir/bench/mavsdk_mission.py" --mavsdk-log "$out/mission-mavsdk-$side.log" \
           --json "$out/mission-$side.json" --markdown "$out/mission-$side.md" ;;
