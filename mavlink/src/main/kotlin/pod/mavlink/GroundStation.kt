@@ -161,8 +161,14 @@ public class GroundStation private constructor(
         }
     }
 
-    // Runs in the single receive coroutine: routing state needs no locking; the decoders are
-    // shared with the tracking loop's stats and guard themselves.
+    // Runs on the link's receive path (a UDP link's own thread), one datagram at a time: it is the
+    // only writer of the routing state. What other threads read is safe as follows: `decoders`
+    // locks itself (the tracking loop adds up its counters); `_vehicles`, `_identity`, telemetry
+    // and `_payloads` are StateFlows with this one writer; `_connection` changes only by
+    // compareAndSet (the tracking loop marks LOST, this path CONNECTED again); `peer` and
+    // `lastHeartbeat` are @Volatile; `heardMessages` is a concurrent set (StreamRequests clears
+    // it); the counters are @Volatile with this one writer; the StatusText joiner is synchronized;
+    // events and messages go out through SharedFlow.tryEmit, which is thread-safe.
     private fun onBytes(peer: LinkPeer, bytes: ByteArray) {
         val decoder = decoders.decoderFor(peer)
         decoder.feed(bytes) { frame ->

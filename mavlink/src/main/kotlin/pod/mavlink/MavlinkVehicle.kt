@@ -125,7 +125,7 @@ public class MavlinkVehicle internal constructor(
         station.sendTo(this, message)
     }
 
-    /** Called from the station's receive coroutine for every frame of this system. */
+    /** Called on the station's receive path (a UDP link's own thread) for every frame of this system; see GroundStation.onBytes for what it may touch. */
     internal fun onFrame(frame: MavFrame, message: Any?) {
         gaps.record(frame.componentId, frame.sequence)
         telemetry.onLinkQuality(LinkQuality(gaps.received, gaps.lost))

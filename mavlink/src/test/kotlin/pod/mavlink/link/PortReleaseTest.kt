@@ -11,8 +11,10 @@ import kotlin.time.Duration.Companion.seconds
 
 /**
  * One `pod` command after another on the same `udpin` port: each binds the port the previous one
- * just closed. Ktor releases a socket on its selector after close() returns, so a station must be
- * able to wait for that ([GroundStation.closeAndAwait]) or the next bind can find the port in use.
+ * just closed. A socket registered with a selector is released only when the selector next
+ * deregisters it, after close() returns (Ktor's UDP link did that; TCP links still do), so a
+ * station must be able to wait for its release ([GroundStation.closeAndAwait]) or the next bind can
+ * find the port in use.
  */
 class PortReleaseTest : StringSpec({
 
