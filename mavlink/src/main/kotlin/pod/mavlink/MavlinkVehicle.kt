@@ -120,6 +120,20 @@ public class MavlinkVehicle internal constructor(
     /** Every message the vehicle sends (a slow collector loses the oldest beyond 1024 buffered). */
     public val messages: SharedFlow<InboundMessage> = _messages.asSharedFlow()
 
+    /**
+     * Protocol exchanges listening in place: each is called on the receive path for every frame,
+     * so a reply reaches the exchange's inbox with no hop through a [messages] collector (the
+     * command round trip and each upload item pay one thread hand-off, not two). A tap must be
+     * quick and must not block.
+     */
+    private val taps = java.util.concurrent.CopyOnWriteArrayList<(InboundMessage) -> Unit>()
+
+    /** Adds [listener] to the receive path (see [taps]); the returned function removes it. */
+    internal fun tap(listener: (InboundMessage) -> Unit): () -> Unit {
+        taps += listener
+        return { taps -= listener }
+    }
+
     /** Sends [message] (an io.dronefleet message object) to this vehicle. */
     public suspend fun send(message: Any) {
         station.sendTo(this, message)
@@ -150,7 +164,9 @@ public class MavlinkVehicle internal constructor(
             val lines = synchronized(texts) { texts.feed(severity, message.text(), message.id(), message.chunkSeq(), textClock.elapsedNow().inWholeNanoseconds) }
             lines.forEach { _statusTexts.tryEmit(it) }
         }
-        _messages.tryEmit(InboundMessage(frame, message))
+        val inbound = InboundMessage(frame, message)
+        for (tap in taps) tap(inbound)
+        _messages.tryEmit(inbound)
     }
 
     /** Delivers chunked lines whose missing chunks are overdue; the station calls it a few times a second. */

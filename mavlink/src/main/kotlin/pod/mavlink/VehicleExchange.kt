@@ -62,12 +62,11 @@ internal suspend fun <I, O, T> MavlinkVehicle.run(
     fun now() = origin.elapsedNow().inWholeNanoseconds
     val inbox = Channel<I>(Channel.UNLIMITED)
     val watch = ExchangeWatch(this@run, wire.during, wire.giveUpAfter)
-    val listening = launch(start = CoroutineStart.UNDISPATCHED) {
-        messages.collect { inbound ->
-            wire.pick(inbound)?.let {
-                if (wire.isAnswer(it)) watch.answered()
-                inbox.trySend(it)
-            }
+    // Picked in place on the receive path: the reply's only hand-off is the resumption of this coroutine.
+    val untap = tap { inbound ->
+        wire.pick(inbound)?.let {
+            if (wire.isAnswer(it)) watch.answered()
+            inbox.trySend(it)
         }
     }
     val also = wire.alsoFrom?.let { inputs -> launch(start = CoroutineStart.UNDISPATCHED) { inputs.collect { inbox.trySend(it) } } }
@@ -113,7 +112,7 @@ internal suspend fun <I, O, T> MavlinkVehicle.run(
         }
         throw e
     } finally {
-        listening.cancel()
+        untap()
         also?.cancel()
         lost.cancel()
         watch.ended()
