@@ -234,6 +234,7 @@ public class GroundStation private constructor(
             if (silence > config.lostAfter &&
                 vehicle._connection.compareAndSet(ConnectionState.CONNECTED, ConnectionState.LOST)
             ) {
+                guarded { vehicle.markedLost() }
                 _events.tryEmit(FleetEvent.Lost(vehicle, silence))
             }
         }

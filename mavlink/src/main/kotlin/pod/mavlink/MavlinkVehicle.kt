@@ -134,6 +134,39 @@ public class MavlinkVehicle internal constructor(
         return { taps -= listener }
     }
 
+    /** Joined status-text lines, to exchanges listening in place (as [taps] are for messages). */
+    private val textTaps = java.util.concurrent.CopyOnWriteArrayList<(StatusText) -> Unit>()
+
+    /** Adds [listener] for every joined [statusTexts] line; the returned function removes it. */
+    internal fun tapTexts(listener: (StatusText) -> Unit): () -> Unit {
+        textTaps += listener
+        return { textTaps -= listener }
+    }
+
+    /** Called once when the station marks the vehicle lost (see [onLost]). */
+    private val lostTaps = java.util.concurrent.CopyOnWriteArrayList<() -> Unit>()
+
+    /**
+     * Calls [listener] when the station marks this vehicle lost, or at once if it is lost now (it
+     * may then also be called a second time, by a loss that races with this call); the returned
+     * function removes it. Lets an exchange fail without a coroutine watching [connection].
+     */
+    internal fun onLost(listener: () -> Unit): () -> Unit {
+        lostTaps += listener
+        if (_connection.value == ConnectionState.LOST) listener()
+        return { lostTaps -= listener }
+    }
+
+    /** The station marked this vehicle lost. */
+    internal fun markedLost() {
+        for (listener in lostTaps) listener()
+    }
+
+    private fun emitText(line: StatusText) {
+        _statusTexts.tryEmit(line)
+        for (tap in textTaps) tap(line)
+    }
+
     /** Sends [message] (an io.dronefleet message object) to this vehicle. */
     public suspend fun send(message: Any) {
         station.sendTo(this, message)
@@ -162,7 +195,7 @@ public class MavlinkVehicle internal constructor(
         if (message is Statustext) {
             val severity = Severity.entries.getOrElse(message.severity().value()) { Severity.DEBUG }
             val lines = synchronized(texts) { texts.feed(severity, message.text(), message.id(), message.chunkSeq(), textClock.elapsedNow().inWholeNanoseconds) }
-            lines.forEach { _statusTexts.tryEmit(it) }
+            lines.forEach(::emitText)
         }
         val inbound = InboundMessage(frame, message)
         for (tap in taps) tap(inbound)
@@ -172,7 +205,7 @@ public class MavlinkVehicle internal constructor(
     /** Delivers chunked lines whose missing chunks are overdue; the station calls it a few times a second. */
     internal fun flushStatusTexts() {
         val lines = synchronized(texts) { texts.flush(textClock.elapsedNow().inWholeNanoseconds) }
-        lines.forEach { _statusTexts.tryEmit(it) }
+        lines.forEach(::emitText)
     }
 
     override fun toString(): String = "vehicle ${_identity.value.systemId}"

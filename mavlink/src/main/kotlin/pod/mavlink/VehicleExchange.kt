@@ -1,18 +1,13 @@
 package pod.mavlink
 
 import kotlinx.coroutines.CancellationException
-import kotlinx.coroutines.CoroutineStart
 import kotlinx.coroutines.NonCancellable
 import kotlinx.coroutines.channels.Channel
-import kotlinx.coroutines.coroutineScope
-import kotlinx.coroutines.flow.Flow
-import kotlinx.coroutines.flow.first
-import kotlinx.coroutines.launch
 import kotlinx.coroutines.selects.onTimeout
 import kotlinx.coroutines.selects.select
 import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeoutOrNull
-import pod.core.vehicle.ConnectionState
+import pod.core.vehicle.StatusText
 import pod.core.vehicle.VehicleLost
 import pod.mavlink.protocol.Outcome
 import pod.mavlink.protocol.ProtocolMachine
@@ -29,7 +24,7 @@ import kotlin.time.Duration.Companion.seconds
  * - [giveUpAfter]: the silence after which it fails, shown in [Awaiting];
  * - [isAnswer]: whether a picked message answers the exchange (the awaiting notice clears), or only
  *   tells that the vehicle is alive;
- * - [alsoFrom]: other inputs, fed in between the messages (the vehicle's joined status texts);
+ * - [texts]: which of the vehicle's joined status-text lines it also reads (null: none);
  * - [onCancel]: what to tell the vehicle when the caller cancels the exchange.
  */
 internal class Wire<I, O>(
@@ -38,7 +33,7 @@ internal class Wire<I, O>(
     val encode: (O) -> Any,
     val giveUpAfter: Duration? = null,
     val isAnswer: (I) -> Boolean = { true },
-    val alsoFrom: Flow<I>? = null,
+    val texts: ((StatusText) -> I?)? = null,
     val onCancel: List<O> = emptyList(),
 )
 
@@ -57,23 +52,22 @@ internal suspend fun <I, O, T> MavlinkVehicle.run(
     machine: ProtocolMachine<I, O, T>,
     wire: Wire<I, O>,
     afterStep: () -> Unit = {},
-): T = coroutineScope {
+): T {
+    // No coroutine of its own: replies, texts and the loss reach the inbox from the receive path
+    // and the station's tracking loop, so the caller is resumed once per input and the exchange
+    // ends without waiting for children to finish.
     val origin = clock.markNow()
     fun now() = origin.elapsedNow().inWholeNanoseconds
     val inbox = Channel<I>(Channel.UNLIMITED)
-    val watch = ExchangeWatch(this@run, wire.during, wire.giveUpAfter)
-    // Picked in place on the receive path: the reply's only hand-off is the resumption of this coroutine.
+    val watch = ExchangeWatch(this, wire.during, wire.giveUpAfter)
     val untap = tap { inbound ->
         wire.pick(inbound)?.let {
             if (wire.isAnswer(it)) watch.answered()
             inbox.trySend(it)
         }
     }
-    val also = wire.alsoFrom?.let { inputs -> launch(start = CoroutineStart.UNDISPATCHED) { inputs.collect { inbox.trySend(it) } } }
-    val lost = launch(start = CoroutineStart.UNDISPATCHED) {
-        connection.first { it == ConnectionState.LOST }
-        inbox.close(VehicleLost(systemId, wire.during))
-    }
+    val untapTexts = wire.texts?.let { read -> tapTexts { line -> read(line)?.let { inbox.trySend(it) } } }
+    val unwatchLoss = onLost { inbox.close(VehicleLost(systemId, wire.during)) }
     try {
         var wakeAt = Step.NEVER
         var step = machine.start(now())
@@ -84,7 +78,7 @@ internal suspend fun <I, O, T> MavlinkVehicle.run(
             afterStep()
             when (val outcome = step.outcome) {
                 null -> Unit
-                is Outcome.Done -> return@coroutineScope outcome.value
+                is Outcome.Done -> return outcome.value
                 is Outcome.Failed -> throw outcome.error
             }
             // A message already waiting is handled without arming a timer (bursts: a download's
@@ -113,8 +107,8 @@ internal suspend fun <I, O, T> MavlinkVehicle.run(
         throw e
     } finally {
         untap()
-        also?.cancel()
-        lost.cancel()
+        untapTexts?.invoke()
+        unwatchLoss()
         watch.ended()
     }
 }

@@ -5,8 +5,6 @@ import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.buffer
 import kotlinx.coroutines.flow.channelFlow
-import kotlinx.coroutines.flow.filter
-import kotlinx.coroutines.flow.map
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
 import pod.mavlink.MavlinkVehicle
@@ -89,7 +87,7 @@ public class CommandService internal constructor(
             giveUpAfter = timing.timeout,
             isAnswer = { it is CommandInput.Reply },
             // Texts come from the vehicle's joined STATUSTEXT lines (a long one arrives in chunks).
-            alsoFrom = vehicle.statusTexts.filter { it.severity.ordinal <= MAV_SEVERITY_WARNING }.map { CommandInput.Text(it.text) },
+            texts = { line -> if (line.severity.ordinal <= MAV_SEVERITY_WARNING) CommandInput.Text(line.text) else null },
         )
         var reported = 0
         try {
