@@ -14,8 +14,9 @@ import kotlin.time.Duration.Companion.seconds
 
 /**
  * Commands to many vehicles at once, in virtual time on a memory network: bounds are vehicle time.
- * What one socket adds with many peers on its port (source addresses, the receive path) is
- * FleetDiscoverySpec's real-UDP test and the fleet-scale benchmark.
+ * What a real socket adds with many peers on one port (source addresses, the receive thread) stays
+ * on loopback UDP: FleetDiscoverySpec's first test, and the command round-trip benchmark's 100
+ * vehicles (BENCHMARKS.md).
  */
 class FleetCommandSpec : StringSpec({
 
