@@ -10,6 +10,8 @@ import kotlinx.coroutines.withTimeout
 import pod.mavlink.command.CommandResult
 import pod.mavlink.command.VehicleCommand
 import pod.sim.SimVehicleConfig
+import pod.sim.fault.LinkFaults
+import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 
 /**
@@ -21,7 +23,9 @@ import kotlin.time.Duration.Companion.seconds
 class FleetCommandSpec : StringSpec({
 
     "100 simulated vehicles in one process each accept a command sent to all of them at once, three rounds running" {
-        virtualRun {
+        // Loopback-like latency each way, drawn per datagram from the seed, so the hundred
+        // transactions overlap in vehicle time and their answers arrive interleaved.
+        virtualRun(up = LATENCY, down = LATENCY) {
             coroutineScope {
                 val gcs = station(this)
                 val fleet = fleet(this, 100, SimVehicleConfig(systemId = 101), gcs)
@@ -43,3 +47,5 @@ class FleetCommandSpec : StringSpec({
         }
     }
 })
+
+private val LATENCY = LinkFaults(delay = 1.milliseconds, jitter = 2.milliseconds)
