@@ -6,11 +6,9 @@ import io.kotest.matchers.comparables.shouldBeLessThan
 import io.kotest.matchers.shouldBe
 import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.coroutineScope
-import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withTimeout
 import pod.core.vehicle.Autopilot
-import pod.mavlink.GroundStation
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.mission.MissionRejected
 import pod.mavlink.mission.MissionResult
@@ -20,38 +18,32 @@ import pod.sim.SimVehicle
 import pod.sim.SimVehicleConfig
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
-import kotlin.time.TimeSource
 
-/** Runs [block] with a ground station and one simulated vehicle configured by [config] (its gcs is filled in). */
-private suspend fun withSim(config: SimVehicleConfig, block: suspend (MavlinkVehicle, SimVehicle) -> Unit) = coroutineScope {
-    val gcs = GroundStation.open("udpin://127.0.0.1:0", this)
-    val sim = SimVehicle(config.copy(gcs = "udpout://127.0.0.1:${gcs.link.localPort}"))
-    try {
-        sim.start(this)
-        val vehicle = withTimeout(10.seconds) { gcs.vehicles.first { config.systemId in it } }.getValue(config.systemId)
-        withTimeout(40.seconds) { block(vehicle, sim) }
-    } finally {
-        sim.stop()
-        gcs.close()
-    }
+/**
+ * Runs [block] in virtual time, on a [VirtualFleet] with a ground station and one simulated
+ * vehicle configured by [config]; [block] has 40 s of vehicle time.
+ */
+private fun withSim(config: SimVehicleConfig, block: suspend VirtualFleet.(MavlinkVehicle, SimVehicle) -> Unit) = virtualRun {
+    heard(config) { vehicle, sim -> withTimeout(40.seconds) { block(vehicle, sim) } }
 }
 
 /** Starts uploading [count] items and cancels the upload once the vehicle has taken about a tenth of them. */
 private suspend fun cancelUploadMidway(vehicle: MavlinkVehicle, count: Int) = coroutineScope {
     val midway = CompletableDeferred<Unit>()
     val upload = launch { vehicle.mission.uploading(waypoints(count)).collect { if (it.done >= count / 10) midway.complete(Unit) } }
-    withTimeout(20.seconds) { midway.await() }
+    withTimeout(20.seconds) { midway.await() } // vehicle time
     upload.cancel()
     upload.join()
 }
 
+/** Mission upload, download and their failures against simulated autopilots, in virtual time: every bound is vehicle time. */
 class MissionServiceSpec : StringSpec({
 
     "a cancelled upload tells a PX4 vehicle, whose next download then succeeds at once" {
         withSim(SimVehicleConfig(systemId = 31, autopilot = Autopilot.PX4)) { vehicle, sim ->
             val before = sim.missionServer.list(MissionType.MISSION)
             cancelUploadMidway(vehicle, 500)
-            val mark = TimeSource.Monotonic.markNow()
+            val mark = timebase.clock.markNow()
             vehicle.mission.download() shouldBe before
             // PX4 keeps a transfer without a cancel for 5 s and answers DENIED meanwhile.
             mark.elapsedNow() shouldBeLessThan 2.seconds
@@ -78,7 +70,7 @@ class MissionServiceSpec : StringSpec({
     "NO_SPACE from a vehicle that is not starting up fails at once" {
         withSim(SimVehicleConfig(systemId = 34, autopilot = Autopilot.ARDUPILOT, missionStorageReadyAfter = 30.seconds)) { vehicle, _ ->
             vehicle.mission.timing = TransferTiming(serviceStartup = Duration.ZERO)
-            val mark = TimeSource.Monotonic.markNow()
+            val mark = timebase.clock.markNow()
             shouldThrow<MissionRejected> { vehicle.mission.upload(waypoints(10)) }.result shouldBe MissionResult.NO_SPACE
             mark.elapsedNow() shouldBeLessThan 2.seconds
         }

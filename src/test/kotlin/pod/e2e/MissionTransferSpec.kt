@@ -5,12 +5,9 @@ import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
-import kotlinx.coroutines.coroutineScope
-import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.flow.toList
 import kotlinx.coroutines.withTimeout
 import pod.core.vehicle.Autopilot
-import pod.mavlink.GroundStation
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.mission.InvalidMission
 import pod.mavlink.mission.MissionItem
@@ -42,18 +39,7 @@ internal fun waypoints(count: Int, type: MissionType = MissionType.MISSION): Lis
 
 /** Runs [block] in virtual time with a ground station and one simulated vehicle of [autopilot] connected to it. */
 private fun withVehicle(autopilot: Autopilot, block: suspend (MavlinkVehicle, SimVehicle) -> Unit) = virtualRun {
-    coroutineScope {
-        val gcs = station(this)
-        val sim = vehicle(SimVehicleConfig(systemId = 5, autopilot = autopilot), gcs)
-        try {
-            sim.start(this)
-            val vehicle = withTimeout(10.seconds) { gcs.vehicles.first { 5 in it } }.getValue(5)
-            withTimeout(60.seconds) { block(vehicle, sim) }
-        } finally {
-            sim.stop()
-            gcs.close()
-        }
-    }
+    heard(SimVehicleConfig(systemId = 5, autopilot = autopilot)) { vehicle, sim -> withTimeout(60.seconds) { block(vehicle, sim) } }
 }
 
 class MissionTransferSpec : StringSpec({

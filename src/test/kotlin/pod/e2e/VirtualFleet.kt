@@ -2,9 +2,11 @@ package pod.e2e
 
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.test.StandardTestDispatcher
 import kotlinx.coroutines.test.TestScope
 import kotlinx.coroutines.test.runTest
+import kotlinx.coroutines.withTimeout
 import pod.core.engine.EngineEvent
 import pod.core.engine.Program
 import pod.core.platform.PlatformVehicle
@@ -17,6 +19,7 @@ import pod.mavlink.MavlinkVehicle
 import pod.mavlink.link.LinkAddress
 import pod.mavlink.link.MemoryNetwork
 import pod.sim.LinkOpener
+import pod.sim.SimFleet
 import pod.sim.SimFlavor
 import pod.sim.SimPlatform
 import pod.sim.SimVehicle
@@ -27,6 +30,7 @@ import pod.sim.fault.LinkFaults
 import java.util.concurrent.ConcurrentHashMap
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.minutes
+import kotlin.time.Duration.Companion.seconds
 
 /**
  * One seeded virtual world for end-to-end behaviour: kotlinx-coroutines-test's scheduler as the
@@ -97,7 +101,24 @@ internal class VirtualFleet(
 
     /** A vehicle of [config] (time scale 1) sending to [gcs] on this world; not started. */
     fun vehicle(config: SimVehicleConfig, gcs: GroundStation): SimVehicle =
-        SimVehicle(config.copy(gcs = "udpout://127.0.0.1:${gcs.link.localPort}", timeScale = 1.0), timebase = timebase, openLink = openLink)
+        SimVehicle(sendingTo(config, gcs), timebase = timebase, openLink = openLink)
+
+    /** [count] vehicles like [config] (system ids from its own, see [SimFleet.start]) sending to [gcs] on this world, started in [scope]. */
+    suspend fun fleet(scope: CoroutineScope, count: Int, config: SimVehicleConfig, gcs: GroundStation): SimFleet =
+        SimFleet.start(count, scope, sendingTo(config, gcs), timebase = timebase, openLink = openLink)
+
+    private fun sendingTo(config: SimVehicleConfig, gcs: GroundStation) =
+        config.copy(gcs = "udpout://127.0.0.1:${gcs.link.localPort}", timeScale = 1.0)
+
+    /**
+     * One vehicle of [config] and a station: [block] once the station has heard the vehicle
+     * (within 10 s of vehicle time); both stop afterwards.
+     */
+    suspend fun heard(
+        config: SimVehicleConfig,
+        station: GroundStationConfig = GroundStationConfig(),
+        block: suspend CoroutineScope.(MavlinkVehicle, SimVehicle) -> Unit,
+    ) = withStation(config, station, { gcs -> withTimeout(10.seconds) { gcs.vehicles.first { config.systemId in it } }.getValue(config.systemId) }, block)
 
     /**
      * [Flights.flying] on this world: one vehicle of [config] and a station, [block] once the
@@ -107,12 +128,19 @@ internal class VirtualFleet(
         config: SimVehicleConfig,
         station: GroundStationConfig = GroundStationConfig(),
         block: suspend CoroutineScope.(MavlinkVehicle, SimVehicle) -> Unit,
+    ) = withStation(config, station, { gcs -> Flights.vehicle(gcs, config.systemId) }, block)
+
+    private suspend fun withStation(
+        config: SimVehicleConfig,
+        station: GroundStationConfig,
+        await: suspend (GroundStation) -> MavlinkVehicle,
+        block: suspend CoroutineScope.(MavlinkVehicle, SimVehicle) -> Unit,
     ) = coroutineScope {
         val gcs = station(this, station)
         val sim = vehicle(config, gcs)
         try {
             sim.start(this)
-            block(Flights.vehicle(gcs, config.systemId), sim)
+            block(await(gcs), sim)
         } finally {
             sim.stop()
             gcs.close()
