@@ -119,6 +119,18 @@ public class GroundStation private constructor(
     }
 
     /**
+     * Sends [message] to [vehicle] from the calling thread without suspending, when the link
+     * [sends in place][MavlinkLink.sendsInPlace] and the vehicle's address is known; false (and
+     * nothing sent) otherwise.
+     */
+    internal fun sendNow(vehicle: MavlinkVehicle, message: Any): Boolean {
+        val peer = vehicle.peer
+        if (!link.sendsInPlace || peer == null) return false
+        link.sendNow(encode(message), peer)
+        return true
+    }
+
+    /**
      * Sends [message] where its target_system says: to that vehicle's address when it is known,
      * to every peer when the target is 0 (broadcast), unknown, or the message has no target field.
      */

@@ -3,8 +3,6 @@ package pod.mavlink
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.NonCancellable
 import kotlinx.coroutines.channels.Channel
-import kotlinx.coroutines.selects.onTimeout
-import kotlinx.coroutines.selects.select
 import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeoutOrNull
 import pod.core.vehicle.StatusText
@@ -39,65 +37,56 @@ internal class Wire<I, O>(
 
 /**
  * Runs [machine] against this vehicle until it ends, and returns its result or throws its error:
- * sends what each step says, waits for the vehicle's messages ([Wire.pick]) with the machine's
- * timer, feeds what arrives, in order and without loss. Listening starts before the machine's
- * first message goes out, so a quick reply cannot slip past. Fails with [VehicleLost] as soon as
- * the vehicle is marked lost. Time is the station's clock ([MavlinkVehicle.clock]) and waits are
- * the coroutine dispatcher's, so the whole exchange runs in virtual time under a test scheduler.
+ * sends what each step says, feeds it the vehicle's messages ([Wire.pick]) in order and without
+ * loss, and its timer's expiries. Listening starts before the machine's first message goes out, so
+ * a quick reply cannot slip past. Fails with [VehicleLost] as soon as the vehicle is marked lost.
+ * Time is the station's clock ([MavlinkVehicle.clock]) and waits are the coroutine dispatcher's,
+ * so the whole exchange runs in virtual time under a test scheduler.
  *
- * [afterStep] is called after each step has been carried out (for progress). Cancelled, the
- * driver sends [Wire.onCancel] within [CANCEL_SEND_LIMIT] before it rethrows.
+ * The machine is driven in place: a reply is fed to it on the receive path that delivered it, and
+ * what it answers goes out from there when the link [sends in place][pod.mavlink.link.MavlinkLink.sendsInPlace]
+ * (UDP, memory), so an upload's next item or a download's next request costs no thread hand-off.
+ * The calling coroutine sends the first step, runs the timer, sends what could not go out in place
+ * (TCP) and returns the outcome; a lock keeps the machine to one caller at a time.
+ *
+ * [afterStep] is called after each step has been carried out (for progress), on either thread; it
+ * must not block. Cancelled, the driver sends [Wire.onCancel] within [CANCEL_SEND_LIMIT] before it
+ * rethrows.
  */
 internal suspend fun <I, O, T> MavlinkVehicle.run(
     machine: ProtocolMachine<I, O, T>,
     wire: Wire<I, O>,
     afterStep: () -> Unit = {},
 ): T {
-    // No coroutine of its own: replies, texts and the loss reach the inbox from the receive path
-    // and the station's tracking loop, so the caller is resumed once per input and the exchange
-    // ends without waiting for children to finish.
     val origin = clock.markNow()
     fun now() = origin.elapsedNow().inWholeNanoseconds
-    val inbox = Channel<I>(Channel.UNLIMITED)
     val watch = ExchangeWatch(this, wire.during, wire.giveUpAfter)
-    val untap = tap { inbound ->
-        wire.pick(inbound)?.let {
-            if (wire.isAnswer(it)) watch.answered()
-            inbox.trySend(it)
-        }
-    }
-    val untapTexts = wire.texts?.let { read -> tapTexts { line -> read(line)?.let { inbox.trySend(it) } } }
-    val unwatchLoss = onLost { inbox.close(VehicleLost(systemId, wire.during)) }
+    val exchange = InPlaceExchange(this, machine, wire, watch, afterStep, ::now)
+    val untap = tap { inbound -> wire.pick(inbound)?.let { exchange.feed(it, answer = wire.isAnswer(it)) } }
+    val untapTexts = wire.texts?.let { read -> tapTexts { line -> read(line)?.let { exchange.feed(it, answer = false) } } }
+    val unwatchLoss = onLost { exchange.lost(VehicleLost(systemId, wire.during)) }
     try {
-        var wakeAt = Step.NEVER
-        var step = machine.start(now())
+        exchange.start()
         while (true) {
-            for (message in step.send) send(wire.encode(message))
-            if (step.send.isNotEmpty()) watch.sent()
-            if (step.wakeAt != Step.KEEP) wakeAt = step.wakeAt
-            afterStep()
-            when (val outcome = step.outcome) {
-                null -> Unit
-                is Outcome.Done -> return outcome.value
-                is Outcome.Failed -> throw outcome.error
-            }
-            // A message already waiting is handled without arming a timer (bursts: a download's
-            // window, an upload's requests); a select prefers it over an expired timer all the same.
-            val waiting = inbox.tryReceive()
-            waiting.exceptionOrNull()?.let { throw it } // closed: the vehicle was lost
-            val timer = wakeAt
-            step = if (waiting.isSuccess) {
-                machine.onMessage(waiting.getOrThrow(), now())
-            } else {
-                select {
-                    inbox.onReceive { machine.onMessage(it, now()) }
-                    if (timer != Step.NEVER) onTimeout((timer - now()).coerceAtLeast(0).nanoseconds) { machine.onTimer(now()) }
+            for (message in exchange.takeUnsent()) send(wire.encode(message))
+            exchange.outcome?.let { outcome ->
+                when (outcome) {
+                    is Outcome.Done -> return outcome.value
+                    is Outcome.Failed -> throw outcome.error
                 }
             }
+            val timer = exchange.wakeAt
+            val woken = if (timer == Step.NEVER) {
+                exchange.wake.receive()
+            } else {
+                withTimeoutOrNull((timer - now()).coerceAtLeast(0).nanoseconds) { exchange.wake.receive() }
+            }
+            if (woken == null) exchange.timerExpired()
         }
         @Suppress("UNREACHABLE_CODE")
         error("unreachable")
     } catch (e: CancellationException) {
+        untap() // nothing more is fed to the machine
         if (wire.onCancel.isNotEmpty()) {
             // Bounded, so a stuck link cannot hold up the cancel.
             withContext(NonCancellable) {
@@ -110,6 +99,74 @@ internal suspend fun <I, O, T> MavlinkVehicle.run(
         untapTexts?.invoke()
         unwatchLoss()
         watch.ended()
+    }
+}
+
+/**
+ * One exchange's machine and what it asked for, shared by the receive path ([feed]) and the
+ * driving coroutine ([start], [timerExpired]) under one lock. [wake] tells the coroutine that the
+ * outcome is in, the timer moved earlier, or messages wait to be sent by it; it is closed with
+ * [VehicleLost] when the vehicle is lost.
+ */
+private class InPlaceExchange<I, O, T>(
+    private val vehicle: MavlinkVehicle,
+    private val machine: ProtocolMachine<I, O, T>,
+    private val wire: Wire<I, O>,
+    private val watch: ExchangeWatch,
+    private val afterStep: () -> Unit,
+    private val now: () -> Long,
+) {
+    val wake = Channel<Unit>(Channel.CONFLATED)
+    private val unsent = ArrayList<O>()
+
+    @Volatile var wakeAt: Long = Step.NEVER
+        private set
+
+    @Volatile var outcome: Outcome<T>? = null
+        private set
+
+    fun start() = synchronized(this) { apply(machine.start(now())) }
+
+    fun feed(input: I, answer: Boolean) {
+        if (answer) watch.answered()
+        synchronized(this) {
+            if (outcome == null) apply(machine.onMessage(input, now()))
+        }
+    }
+
+    fun timerExpired() = synchronized(this) {
+        val at = now()
+        if (outcome == null && wakeAt != Step.NEVER && at >= wakeAt) apply(machine.onTimer(at))
+    }
+
+    fun lost(error: VehicleLost) {
+        wake.close(error)
+    }
+
+    fun takeUnsent(): List<O> = synchronized(this) {
+        if (unsent.isEmpty()) emptyList() else unsent.toList().also { unsent.clear() }
+    }
+
+    /** Carries out [step]: sends in place if it can, else leaves the messages to the coroutine. */
+    private fun apply(step: Step<O, T>) {
+        var ping = false
+        for (message in step.send) {
+            if (unsent.isNotEmpty() || !vehicle.station.sendNow(vehicle, wire.encode(message))) {
+                unsent += message
+                ping = true
+            }
+        }
+        if (step.send.isNotEmpty()) watch.sent()
+        if (step.wakeAt != Step.KEEP) {
+            if (step.wakeAt < wakeAt) ping = true
+            wakeAt = step.wakeAt
+        }
+        afterStep()
+        if (step.outcome != null) {
+            outcome = step.outcome
+            ping = true
+        }
+        if (ping) wake.trySend(Unit)
     }
 }
 

@@ -29,6 +29,20 @@ public interface MavlinkLink {
     /** Sends [bytes] to [peer]. */
     public suspend fun send(bytes: ByteArray, peer: LinkPeer)
 
+    /**
+     * Whether [sendNow] works on this link: a UDP or in-memory link writes a datagram without
+     * waiting for anything; TCP writes through a suspending channel and says false.
+     */
+    public val sendsInPlace: Boolean get() = false
+
+    /**
+     * Sends [bytes] to [peer] from the calling thread without suspending (a protocol exchange
+     * answering on the receive path); only on a link that [sendsInPlace].
+     */
+    public fun sendNow(bytes: ByteArray, peer: LinkPeer) {
+        throw UnsupportedOperationException("$address cannot send in place")
+    }
+
     /** Sends [bytes] to every peer in [peers]. */
     public suspend fun sendToAll(bytes: ByteArray) {
         for (peer in peers) send(bytes, peer)

@@ -142,7 +142,11 @@ public class MemoryNetwork(
             }
         }
 
-        override suspend fun send(bytes: ByteArray, peer: LinkPeer) {
+        override suspend fun send(bytes: ByteArray, peer: LinkPeer) = sendNow(bytes, peer)
+
+        override val sendsInPlace: Boolean get() = true
+
+        override fun sendNow(bytes: ByteArray, peer: LinkPeer) {
             val to = peer.address as? InetSocketAddress ?: return
             if (closed) return
             deliver(this, bytes, to)

@@ -86,7 +86,11 @@ internal class UdpLink private constructor(
         }
     }
 
-    override suspend fun send(bytes: ByteArray, peer: LinkPeer) {
+    override suspend fun send(bytes: ByteArray, peer: LinkPeer) = sendNow(bytes, peer)
+
+    override val sendsInPlace: Boolean get() = true
+
+    override fun sendNow(bytes: ByteArray, peer: LinkPeer) {
         val to = if (peer == remote) remoteAddress else heard[peer] ?: (peer.address as? io.ktor.network.sockets.SocketAddress)?.toJavaAddress()
         try {
             channel.send(ByteBuffer.wrap(bytes), to ?: return)
