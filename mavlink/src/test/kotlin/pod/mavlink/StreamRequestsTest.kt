@@ -31,29 +31,12 @@ import pod.core.vehicle.StatusText
 import pod.mavlink.command.MavCommands
 import pod.mavlink.command.ScriptedVehicle
 
-/**
- * A ground station and one scripted vehicle that also sees the station's own requests, on a
- * [MemoryNetwork] in virtual time: the request rounds' timing is the subject, not the socket.
- */
+/** A ground station and one scripted vehicle that also sees the station's own requests, in virtual time. */
 private fun withScripted(
     config: GroundStationConfig,
     answer: suspend (Any) -> List<Any>,
     block: suspend CoroutineScope.(MavlinkVehicle, ScriptedVehicle) -> Unit,
-) = runTest {
-    val timebase = Timebase(testScheduler.timeSource, StandardTestDispatcher(testScheduler))
-    coroutineScope {
-        val network = MemoryNetwork(this, timebase)
-        val gcs = GroundStation.open(network.open("udpin://127.0.0.1:14550"), this, config.copy(timebase = timebase))
-        val scripted = ScriptedVehicle.start(this, network.open("udpout://127.0.0.1:14550"), seeStationRequests = true, answer = answer)
-        try {
-            block(withTimeout(5.seconds) { gcs.vehicles.first { 1 in it } }.getValue(1), scripted)
-        } finally {
-            scripted.close()
-            gcs.close()
-            coroutineContext[kotlinx.coroutines.Job]?.children?.forEach { it.cancel() }
-        }
-    }
-}
+) = ScriptedVehicle.inVirtualTime(config, seeStationRequests = true, answer = answer, block = block)
 
 private fun CommandLong.asks(command: Int, messageId: Int) = command().value() == command && param1() == messageId.toFloat()
 

@@ -57,14 +57,24 @@ class CommandTap(private val inner: MavlinkLink) : MavlinkLink by inner {
     }
 
     override suspend fun send(bytes: ByteArray, peer: LinkPeer) {
-        if (messageId(bytes) != COMMAND_LONG) return inner.send(bytes, peer)
+        stamped(bytes) { inner.send(bytes, peer) }
+    }
+
+    // The station sends in place when the link can (a command's first send and its resends go out
+    // from the exchange itself): stamped the same way.
+    override fun sendNow(bytes: ByteArray, peer: LinkPeer) {
+        stamped(bytes) { inner.sendNow(bytes, peer) }
+    }
+
+    private inline fun stamped(bytes: ByteArray, send: () -> Unit) {
+        if (messageId(bytes) != COMMAND_LONG) return send()
         // target_system is payload byte 30 (seven floats and the command come first).
         val target = if (bytes.size > 10 + 30) bytes[10 + 30].toInt() and 0xFF else 0
         // Stamped before the send too: on two cores the answer can come in before the send returns.
         val first = sentAt.compareAndSet(target, 0, System.nanoTime())
         sends.incrementAndGet(target)
         totalSends.incrementAndGet()
-        inner.send(bytes, peer)
+        send()
         if (first) sendReturnedAt.set(target, System.nanoTime())
     }
 

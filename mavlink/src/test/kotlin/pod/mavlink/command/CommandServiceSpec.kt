@@ -39,33 +39,13 @@ private const val ARM = 400
 
 private fun ack(command: Int, result: CommandResult, progress: Int? = null, target: Int = 255) = CommandWire.ack(command, result, target, 190, progress)
 
-/**
- * Runs [block] with a ground station and one scripted vehicle on a [MemoryNetwork], in virtual
- * time: the commands' timeouts and resends are the subject here, not the socket.
- */
+/** A ground station and one scripted vehicle in virtual time: the commands' timeouts and resends are the subject, not the socket. */
 private fun withVehicle(
     config: GroundStationConfig = GroundStationConfig(streamRates = emptyMap(), requestPayloads = false),
     autopilot: Int = MavlinkEnums.MAV_AUTOPILOT_ARDUPILOTMEGA,
     answer: suspend (Any) -> List<Any>,
     block: suspend CoroutineScope.(MavlinkVehicle, ScriptedVehicle) -> Unit,
-) = runTest {
-    val timebase = Timebase(testScheduler.timeSource, StandardTestDispatcher(testScheduler))
-    coroutineScope {
-        val network = MemoryNetwork(this, timebase)
-        val gcs = GroundStation.open(network.open("udpin://127.0.0.1:14550"), this, config.copy(timebase = timebase))
-        val vehicle = ScriptedVehicle.start(this, network.open("udpout://127.0.0.1:14550"), autopilot = autopilot, answer = answer)
-        try {
-            val seen = withTimeout(5.seconds) { gcs.vehicles.first { 1 in it } }.getValue(1)
-            block(seen, vehicle)
-        } finally {
-            vehicle.close()
-            gcs.close()
-            coroutineContext.cancelChildren()
-        }
-    }
-}
-
-private fun kotlin.coroutines.CoroutineContext.cancelChildren() = this[kotlinx.coroutines.Job]?.children?.forEach { it.cancel() }
+) = ScriptedVehicle.inVirtualTime(config, autopilot, answer = answer, block = block)
 
 class CommandServiceSpec : StringSpec({
 

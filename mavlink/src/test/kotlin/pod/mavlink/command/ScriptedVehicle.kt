@@ -11,7 +11,18 @@ import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.update
 import kotlinx.coroutines.launch
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.test.StandardTestDispatcher
+import kotlinx.coroutines.test.runTest
+import kotlinx.coroutines.withTimeout
+import pod.core.time.Timebase
+import pod.mavlink.GroundStation
+import pod.mavlink.GroundStationConfig
 import pod.mavlink.MavlinkEnums
+import pod.mavlink.MavlinkVehicle
+import pod.mavlink.link.MemoryNetwork
+import kotlin.time.Duration.Companion.seconds
 import pod.mavlink.SequenceNumbers
 import pod.mavlink.codec.FrameDecoder
 import pod.mavlink.codec.FrameEncoder
@@ -114,5 +125,32 @@ class ScriptedVehicle private constructor(
             seeStationRequests: Boolean = false,
             answer: suspend (message: Any) -> List<Any>,
         ): ScriptedVehicle = ScriptedVehicle(link, systemId, autopilot, answer, seeStationRequests).also { it.start(scope) }
+
+        /**
+         * Runs [block] in virtual time with a ground station ([config] on the test scheduler's
+         * timebase) and one scripted vehicle on a [MemoryNetwork], once the station has heard it:
+         * for tests whose subject is timeouts and resends, not the socket.
+         */
+        fun inVirtualTime(
+            config: GroundStationConfig,
+            autopilot: Int = MavlinkEnums.MAV_AUTOPILOT_ARDUPILOTMEGA,
+            seeStationRequests: Boolean = false,
+            answer: suspend (message: Any) -> List<Any>,
+            block: suspend CoroutineScope.(MavlinkVehicle, ScriptedVehicle) -> Unit,
+        ) = runTest {
+            val timebase = Timebase(testScheduler.timeSource, StandardTestDispatcher(testScheduler))
+            coroutineScope {
+                val network = MemoryNetwork(this, timebase)
+                val gcs = GroundStation.open(network.open("udpin://127.0.0.1:14550"), this, config.copy(timebase = timebase))
+                val vehicle = start(this, network.open("udpout://127.0.0.1:14550"), autopilot = autopilot, seeStationRequests = seeStationRequests, answer = answer)
+                try {
+                    block(withTimeout(5.seconds) { gcs.vehicles.first { 1 in it } }.getValue(1), vehicle)
+                } finally {
+                    vehicle.close()
+                    gcs.close()
+                    coroutineContext[Job]?.children?.forEach { it.cancel() }
+                }
+            }
+        }
     }
 }
