@@ -68,7 +68,7 @@ public class GroundStation private constructor(
     @Volatile private var fromSystemZero = 0L
     @Volatile private var handlerErrors = 0L
     @Volatile private var trackingErrors = 0L
-    private val streamRequests = StreamRequests(scope, config)
+    private val streamRequests = StreamRequests(scope, config, ::linkBroken)
 
     /** Vehicles heard so far by system id, lost ones included (see [MavlinkVehicle.connection]). */
     public val vehicles: StateFlow<Map<Int, MavlinkVehicle>> = _vehicles.asStateFlow()
@@ -87,12 +87,16 @@ public class GroundStation private constructor(
             try {
                 link.receive(::onBytes)
             } catch (e: LinkException) {
-                _linkError.value = e
+                _linkError.value = e // the receive side's account is the one that stands
             }
         }
         scope.launch(CoroutineName("heartbeat")) {
             while (isActive) {
-                link.sendToAll(encode(gcsHeartbeat()))
+                try {
+                    link.sendToAll(encode(gcsHeartbeat()))
+                } catch (e: LinkException) {
+                    linkBroken(e) // a TCP peer hung up; the receive side reports it too
+                }
                 delay(config.heartbeatInterval)
             }
         }
@@ -106,6 +110,11 @@ public class GroundStation private constructor(
                 guarded { publishStats() }
             }
         }
+    }
+
+    /** A send found the link broken: recorded unless the receive side already said how. */
+    private fun linkBroken(e: LinkException) {
+        _linkError.compareAndSet(null, e)
     }
 
     /** How many source addresses have a frame decoder now (at most [GroundStationConfig.maxPeers]). */

@@ -1,5 +1,6 @@
 package pod.mavlink
 
+import pod.mavlink.link.LinkException
 import pod.mavlink.command.CommandWire
 import pod.mavlink.command.MavCommands
 import pod.mavlink.command.VehicleCommand
@@ -28,12 +29,24 @@ import pod.core.vehicle.ConnectionState
  * One job per vehicle; a vehicle found again after being lost is asked again from the start
  * ([restart]), since a rebooted autopilot forgets what it was asked.
  */
-internal class StreamRequests(private val scope: CoroutineScope, private val config: GroundStationConfig) {
+internal class StreamRequests(
+    private val scope: CoroutineScope,
+    private val config: GroundStationConfig,
+    private val onLinkBroken: (LinkException) -> Unit,
+) {
     private val jobs = HashMap<Int, Job>()
 
     /** Starts (or starts over) asking [vehicle]. */
     fun restart(vehicle: MavlinkVehicle) {
-        val job = scope.launch(CoroutineName("stream-requests-${vehicle.systemId}")) { ask(vehicle) }
+        val job = scope.launch(CoroutineName("stream-requests-${vehicle.systemId}")) {
+            try {
+                ask(vehicle)
+            } catch (e: LinkException) {
+                // A TCP peer that hung up: the station reports it (GroundStation.linkError); the
+                // requests end with the link, they must not escape as an uncaught failure.
+                onLinkBroken(e)
+            }
+        }
         synchronized(jobs) { jobs.put(vehicle.systemId, job) }?.cancel()
     }
 
