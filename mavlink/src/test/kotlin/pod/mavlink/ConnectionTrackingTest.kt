@@ -48,11 +48,7 @@ private fun peer(i: Int) = LinkPeer(InetSocketAddress("127.${(i shr 16) and 255}
 
 class ConnectionTrackingTest : StringSpec({
     val encoder = FrameEncoder()
-    fun heartbeat(sequence: Int) = encoder.encode(
-        Heartbeat.builder().type(MavType.MAV_TYPE_QUADROTOR).autopilot(MavAutopilot.MAV_AUTOPILOT_ARDUPILOTMEGA)
-            .baseMode(EnumValue.create(0)).systemStatus(MavState.MAV_STATE_STANDBY).mavlinkVersion(3).build(),
-        1, 1, sequence and 255,
-    )
+    fun heartbeat(sequence: Int) = copterHeartbeat(1, sequence)
 
     "datagrams from many new addresses while stats are published: the decoders stay bounded and a vehicle that then falls silent is still marked lost" {
         coroutineScope {

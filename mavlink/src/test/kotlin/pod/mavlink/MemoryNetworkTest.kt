@@ -1,37 +1,24 @@
 package pod.mavlink
 
-import io.dronefleet.mavlink.minimal.Heartbeat
-import io.dronefleet.mavlink.minimal.MavAutopilot
-import io.dronefleet.mavlink.minimal.MavState
-import io.dronefleet.mavlink.minimal.MavType
-import io.dronefleet.mavlink.util.EnumValue
 import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.shouldBe
-import kotlinx.coroutines.test.StandardTestDispatcher
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.test.runTest
-import pod.core.time.Timebase
 import pod.core.vehicle.ConnectionState
-import pod.mavlink.codec.FrameEncoder
 import pod.mavlink.link.MemoryNetwork
 import pod.mavlink.link.PortInUse
 import kotlin.time.Duration.Companion.hours
 import kotlin.time.Duration.Companion.seconds
 
 class MemoryNetworkTest : StringSpec({
-    val encoder = FrameEncoder()
-    fun heartbeat(sequence: Int) = encoder.encode(
-        Heartbeat.builder().type(MavType.MAV_TYPE_QUADROTOR).autopilot(MavAutopilot.MAV_AUTOPILOT_ARDUPILOTMEGA)
-            .baseMode(EnumValue.create(0)).systemStatus(MavState.MAV_STATE_STANDBY).mavlinkVersion(3).build(),
-        7, 1, sequence and 255,
-    )
+    fun heartbeat(sequence: Int) = copterHeartbeat(7, sequence)
 
     "a station on a memory network finds a vehicle, hears our heartbeat back, and loses it after lostAfter of virtual time" {
         runTest {
-            val timebase = Timebase(testScheduler.timeSource, StandardTestDispatcher(testScheduler))
+            val timebase = virtualTimebase()
             val network = MemoryNetwork(backgroundScope, timebase)
             val config = GroundStationConfig(streamRates = emptyMap(), requestHome = false, requestPayloads = false, timebase = timebase)
             val gcs = GroundStation.open(network.open("udpin://127.0.0.1:14550"), backgroundScope, config)
@@ -62,7 +49,7 @@ class MemoryNetworkTest : StringSpec({
 
     "an address can be bound once" {
         runTest {
-            val network = MemoryNetwork(backgroundScope, Timebase(testScheduler.timeSource, StandardTestDispatcher(testScheduler)))
+            val network = MemoryNetwork(backgroundScope, virtualTimebase())
             network.open("udpin://127.0.0.1:14550")
             shouldThrow<PortInUse> { network.open("udpin://127.0.0.1:14550") }
         }

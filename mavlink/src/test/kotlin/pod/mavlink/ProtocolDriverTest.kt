@@ -7,10 +7,8 @@ import io.kotest.matchers.shouldBe
 import kotlinx.coroutines.async
 import kotlinx.coroutines.flow.filterNotNull
 import kotlinx.coroutines.flow.first
-import kotlinx.coroutines.test.StandardTestDispatcher
 import kotlinx.coroutines.test.TestScope
 import kotlinx.coroutines.test.runTest
-import pod.core.time.Timebase
 import pod.core.vehicle.VehicleLost
 import pod.mavlink.command.CommandTiming
 import pod.mavlink.command.MavCommands
@@ -22,7 +20,7 @@ import kotlin.time.Duration.Companion.seconds
 
 /** A station and a [ScriptedVehicle] answering with [answer], on a perfect memory network in virtual time. */
 private suspend fun TestScope.withScripted(answer: suspend (Any) -> List<Any>, block: suspend (MavlinkVehicle, ScriptedVehicle) -> Unit) {
-    val timebase = Timebase(testScheduler.timeSource, StandardTestDispatcher(testScheduler))
+    val timebase = virtualTimebase()
     val network = MemoryNetwork(backgroundScope, timebase)
     val config = GroundStationConfig(streamRates = emptyMap(), requestHome = false, requestPayloads = false, timebase = timebase)
     val station = GroundStation.open(network.open("udpin://127.0.0.1:14550"), backgroundScope, config)

@@ -6,9 +6,8 @@ import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.longs.shouldBeLessThanOrEqual
 import io.kotest.matchers.shouldBe
 import kotlinx.coroutines.flow.first
-import kotlinx.coroutines.test.StandardTestDispatcher
 import kotlinx.coroutines.test.runTest
-import pod.core.time.Timebase
+import pod.mavlink.virtualTimebase
 import pod.mavlink.GroundStation
 import pod.mavlink.GroundStationConfig
 import pod.mavlink.mission.Faults
@@ -27,7 +26,7 @@ class CommandLossPropertyTest : StringSpec({
         val timing = CommandTiming()
         for (seed in 1L..10L) {
             runTest {
-                val timebase = Timebase(testScheduler.timeSource, StandardTestDispatcher(testScheduler))
+                val timebase = virtualTimebase()
                 val faults = Faults(drop = 0.3, minDelayMs = 5, maxDelayMs = 5)
                 val network = MemoryNetwork(backgroundScope, timebase) { from, _ -> SeededConditions(faults, Random(seed * 1000 + from.port)) }
                 val config = GroundStationConfig(streamRates = emptyMap(), requestHome = false, requestPayloads = false, lostAfter = 24.hours, timebase = timebase)

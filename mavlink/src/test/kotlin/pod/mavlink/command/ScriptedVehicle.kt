@@ -13,10 +13,9 @@ import kotlinx.coroutines.flow.update
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.first
-import kotlinx.coroutines.test.StandardTestDispatcher
 import kotlinx.coroutines.test.runTest
 import kotlinx.coroutines.withTimeout
-import pod.core.time.Timebase
+import pod.mavlink.virtualTimebase
 import pod.mavlink.GroundStation
 import pod.mavlink.GroundStationConfig
 import pod.mavlink.MavlinkEnums
@@ -138,7 +137,7 @@ class ScriptedVehicle private constructor(
             answer: suspend (message: Any) -> List<Any>,
             block: suspend CoroutineScope.(MavlinkVehicle, ScriptedVehicle) -> Unit,
         ) = runTest {
-            val timebase = Timebase(testScheduler.timeSource, StandardTestDispatcher(testScheduler))
+            val timebase = virtualTimebase()
             coroutineScope {
                 val network = MemoryNetwork(this, timebase)
                 val gcs = GroundStation.open(network.open("udpin://127.0.0.1:14550"), this, config.copy(timebase = timebase))

@@ -12,9 +12,9 @@ import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.selects.onTimeout
 import kotlinx.coroutines.selects.select
-import kotlinx.coroutines.test.StandardTestDispatcher
 import kotlinx.coroutines.test.TestScope
 import pod.core.time.Timebase
+import pod.mavlink.virtualTimebase
 import pod.mavlink.GroundStation
 import pod.mavlink.GroundStationConfig
 import pod.mavlink.MavlinkVehicle
@@ -161,7 +161,7 @@ internal suspend fun TestScope.onLossyLink(
     lose: ((message: MissionMessage, toVehicle: Boolean) -> Boolean)? = null,
     block: suspend (vehicle: MavlinkVehicle, onBoard: MissionVehicle) -> Unit,
 ) {
-    val timebase = Timebase(testScheduler.timeSource, StandardTestDispatcher(testScheduler))
+    val timebase = virtualTimebase()
     fun losing(toVehicle: Boolean): ((ByteArray) -> Boolean)? = lose?.let { rule ->
         { bytes -> missionMessagesIn(bytes).any { rule(it, toVehicle) } }
     }
