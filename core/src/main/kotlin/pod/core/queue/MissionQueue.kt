@@ -1,0 +1,209 @@
+package pod.core.queue
+
+import kotlinx.coroutines.channels.BufferOverflow
+import kotlinx.coroutines.flow.MutableSharedFlow
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.SharedFlow
+import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.asSharedFlow
+import kotlinx.coroutines.flow.asStateFlow
+import kotlinx.coroutines.flow.first
+import pod.core.PodException
+import kotlin.time.Duration
+import kotlin.time.TimeSource
+
+/**
+ * A vehicle's dynamic mission queue, in the spirit of Paparazzi's mission interface: elements are
+ * added at any time ([append], [prepend], [replaceCurrent], [replaceAll]), the vehicle flies the
+ * current one, and each ends when it reaches its end, when its duration runs out, or on [next].
+ *
+ * The queue itself flies nothing: a platform's queue flight (for MAVLink vehicles
+ * `pod.mavlink.queue.QueueFlight`) follows [state], commands the vehicle, and reports arrivals
+ * ([arrived]) and the passing of time ([expire]). Calls are safe from any thread; each change is
+ * applied atomically and published on [state], [status] and [events]. Durations are counted on
+ * [clock] (pass the station's or the test scheduler's).
+ */
+public class MissionQueue(private val clock: TimeSource.WithComparableMarks = TimeSource.Monotonic) {
+    private val origin = clock.markNow()
+    private val _state = MutableStateFlow(QueueState())
+    private val _status = MutableStateFlow(QueueStatus.EMPTY)
+    private val _events = MutableSharedFlow<QueueEvent>(extraBufferCapacity = EVENT_BUFFER, onBufferOverflow = BufferOverflow.DROP_OLDEST)
+    private val _flyer = MutableStateFlow<String?>(null)
+
+    /** The queue's contents, changed atomically by every call. */
+    public val state: StateFlow<QueueState> = _state.asStateFlow()
+
+    /**
+     * What a ground-station display shows, like Paparazzi's MISSION_STATUS: the current element, its
+     * remaining time (null when unlimited) and the pending elements. The remaining time is refreshed
+     * on every change and by the flight that flies the queue (about once a second).
+     */
+    public val status: StateFlow<QueueStatus> = _status.asStateFlow()
+
+    /**
+     * What happened, in order: elements started and ended (with why), and the queue running empty.
+     * A collector that falls more than 256 events behind loses the oldest.
+     */
+    public val events: SharedFlow<QueueEvent> = _events.asSharedFlow()
+
+    /** Who is flying the queue now (a vehicle's name), or null. */
+    public val flyer: StateFlow<String?> = _flyer.asStateFlow()
+
+    /** Time on the queue's clock since it was made. */
+    public fun now(): Duration = origin.elapsedNow()
+
+    /** Adds [element] at the end; it flies at once when the queue is empty. */
+    public fun append(element: QueueElement): QueueEntry = insert(InsertMode.APPEND, element)
+
+    /** Puts [element] before the current one, which resumes after it (with its whole duration). */
+    public fun prepend(element: QueueElement): QueueEntry = insert(InsertMode.PREPEND, element)
+
+    /** Drops the current element; [element] flies now. */
+    public fun replaceCurrent(element: QueueElement): QueueEntry = insert(InsertMode.REPLACE_CURRENT, element)
+
+    /** Empties the queue; [element] flies now. */
+    public fun replaceAll(element: QueueElement): QueueEntry = insert(InsertMode.REPLACE_ALL, element)
+
+    /** Inserts [element] by [mode] and returns the entry (with its id) it became. */
+    public fun insert(mode: InsertMode, element: QueueElement): QueueEntry {
+        var entry: QueueEntry? = null
+        change { state, now -> state.insert(mode, element, now).also { entry = it.second }.first }
+        return entry!!
+    }
+
+    /** Ends the current element now (Paparazzi's NEXT_MISSION); false when the queue was empty. */
+    public fun next(): Boolean {
+        var had = false
+        change(EndReason.SKIPPED) { state, now -> had = state.current != null; state.advance(now) }
+        return had
+    }
+
+    /** Empties the queue; the vehicle flying it holds where it is. */
+    public fun clear() {
+        change(EndReason.CLEARED) { state, _ -> state.cleared() }
+    }
+
+    /** Reports that element [id] reached its end; ignored when [id] is no longer current. */
+    public fun arrived(id: Long) {
+        change(EndReason.ARRIVED) { state, now -> state.arrived(id, now) }
+    }
+
+    /** Ends the current element if its duration has run out, and refreshes [status]'s remaining time. */
+    public fun expire() {
+        change(EndReason.ELAPSED) { state, now -> state.expire(now) }
+    }
+
+    /** Suspends until the queue holds something, and returns its current entry. */
+    public suspend fun awaitElement(): QueueEntry = state.first { it.current != null }.current!!
+
+    /** Suspends until the queue is empty. */
+    public suspend fun awaitEmpty() {
+        state.first { it.isEmpty }
+    }
+
+    /**
+     * Marks the queue as flown by [who] until the returned function is called; throws [QueueBusy]
+     * when another flight holds it (one queue steers one vehicle).
+     */
+    public fun claim(who: String): () -> Unit {
+        if (!_flyer.compareAndSet(null, who)) throw QueueBusy(_flyer.value ?: "another flight", who)
+        return { _flyer.compareAndSet(who, null) }
+    }
+
+    /**
+     * Applies [transition] atomically at the current time, publishes the result and the events it
+     * implies; a current element that changes without having been preempted or replaced ended for
+     * [reason].
+     */
+    private fun change(reason: EndReason? = null, transition: (QueueState, Duration) -> QueueState): QueueState {
+        val now = now()
+        var before = _state.value
+        var after: QueueState
+        while (true) {
+            before = _state.value
+            after = transition(before, now)
+            if (_state.compareAndSet(before, after)) break
+        }
+        _status.value = QueueStatus(after.current, after.remaining(now), after.pending)
+        if (after !== before) announce(before, after, reason, now)
+        return after
+    }
+
+    private fun announce(before: QueueState, after: QueueState, reason: EndReason?, now: Duration) {
+        val old = before.current
+        val new = after.current
+        if (old?.id == new?.id) return
+        if (old != null) {
+            val why = when {
+                after.pending.any { it.id == old.id } -> EndReason.PREEMPTED
+                reason != null -> reason
+                else -> EndReason.REPLACED
+            }
+            _events.tryEmit(QueueEvent.Ended(old, why, now))
+        }
+        if (new != null) _events.tryEmit(QueueEvent.Started(new, now)) else _events.tryEmit(QueueEvent.Emptied(now))
+    }
+
+    private companion object {
+        const val EVENT_BUFFER = 256
+    }
+}
+
+/** What a queue shows: see [MissionQueue.status]. */
+public data class QueueStatus(
+    /** The element being flown, or null. */
+    val current: QueueEntry?,
+    /** What is left of its duration, or null when it has none. */
+    val remaining: Duration?,
+    /** The elements after it, in order. */
+    val pending: List<QueueEntry>,
+) {
+    public companion object {
+        /** An empty queue. */
+        public val EMPTY: QueueStatus = QueueStatus(null, null, emptyList())
+    }
+}
+
+/** Something that happened in a [MissionQueue]; [at] is queue time. */
+public sealed interface QueueEvent {
+    /** When it happened, on the queue's clock. */
+    public val at: Duration
+
+    /** [entry] became current. */
+    public data class Started(val entry: QueueEntry, override val at: Duration) : QueueEvent
+
+    /** [entry] stopped being current, for [reason]. */
+    public data class Ended(val entry: QueueEntry, val reason: EndReason, override val at: Duration) : QueueEvent
+
+    /** The queue ran empty: the vehicle holds where it is. */
+    public data class Emptied(override val at: Duration) : QueueEvent
+}
+
+/** Why an element stopped being current. */
+public enum class EndReason {
+    /** It reached its end. */
+    ARRIVED,
+
+    /** Its duration ran out. */
+    ELAPSED,
+
+    /** `next()` ended it. */
+    SKIPPED,
+
+    /** A prepended element went before it; it is pending again. */
+    PREEMPTED,
+
+    /** A replaceCurrent or replaceAll dropped it. */
+    REPLACED,
+
+    /** The queue was cleared. */
+    CLEARED,
+}
+
+/** A second flight tried to fly a queue that [holder] is already flying. */
+public class QueueBusy(
+    /** Who flies it. */
+    public val holder: String,
+    /** Who asked. */
+    public val asker: String,
+) : PodException("the queue is already flown by $holder; $asker cannot fly it too (one queue steers one vehicle)")
