@@ -112,6 +112,13 @@ public class MavlinkVehicle internal constructor(
     public val action: pod.mavlink.action.VehicleActions = pod.mavlink.action.VehicleActions(this)
 
     /**
+     * This vehicle's dynamic mission queue (Paparazzi's mission interface): add, replace and skip
+     * elements at any time; [pod.mavlink.queue.QueueFlight] (or a program's queue task) flies it.
+     * Durations count on the station's clock.
+     */
+    public val queue: pod.core.queue.MissionQueue by lazy { pod.core.queue.MissionQueue(station.config.timebase.clock) }
+
+    /**
      * Text lines the vehicle sends (STATUSTEXT), as they arrive; a long line sent in chunks comes
      * joined, once its last chunk is in (or, when a chunk is lost, about a second after its first).
      */

@@ -81,6 +81,13 @@ public class Program internal constructor(
     /** Gives [vehicle] back. */
     public fun release(vehicle: PlatformVehicle): Unit = release(listOf(vehicle))
 
+    /**
+     * A new, empty mission queue that counts durations in this program's vehicle time (the
+     * engine's clock and the platform's time scale). Fly it with a [Task.FlyQueue] (pod-dsl:
+     * `queue on vehicle`) and feed it from any task.
+     */
+    public fun missionQueue(): pod.core.queue.MissionQueue = pod.core.queue.MissionQueue(engine.config.timeSource, engine.platform.timeScale)
+
     /** Publishes [text] as a [EngineEvent.Message] (Dolphin `message`). */
     public fun message(text: String) {
         engine.emit(EngineEvent.Message(engine.now(), text))

@@ -23,6 +23,22 @@ public sealed class Task {
         override val label: String get() = mission.name
     }
 
+    /**
+     * Fly [queue] on the one vehicle the task is bound to: the vehicle flies the queue's current
+     * element while the program (or other tasks) adds, replaces and skips elements. Completes when
+     * the queue runs empty and [whenEmpty] is [WhenEmpty.COMPLETE], the vehicle holding where it is.
+     */
+    public class FlyQueue(
+        /** The queue to fly. */
+        public val queue: pod.core.queue.MissionQueue,
+        /** What the task does when the queue runs empty. */
+        public val whenEmpty: pod.core.queue.WhenEmpty = pod.core.queue.WhenEmpty.COMPLETE,
+        /** What a vehicle does when this task is cancelled, or null for the program's choice. */
+        public val onCancel: SafeState? = null,
+    ) : Task() {
+        override val label: String get() = "queue"
+    }
+
     /** Run [tasks] one after the other; the first failure ends the sequence (Dolphin `>>`). */
     public class Sequence(
         /** The tasks in order. */

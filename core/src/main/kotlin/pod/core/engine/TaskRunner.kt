@@ -11,6 +11,7 @@ import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeoutOrNull
 import pod.core.platform.PlatformVehicle
 import pod.core.platform.SafeState
+import pod.core.queue.QueueNeedsOneVehicle
 import pod.core.vehicle.ConnectionState
 import pod.core.vehicle.VehicleLost
 import kotlin.coroutines.AbstractCoroutineContextElement
@@ -47,6 +48,7 @@ internal class TaskRunner(private val engine: Engine, private val program: Progr
     private suspend fun body(task: Task, vehicles: VehicleSet?, id: Int) {
         when (task) {
             is Task.Fly -> fly(task, vehicles ?: throw UnboundTask(task.label), id)
+            is Task.FlyQueue -> flyQueue(task, vehicles ?: throw UnboundTask(task.label), id)
             is Task.Sequence -> task.tasks.forEach { run(it, vehicles, id) }
             is Task.Concurrent -> coroutineScope { task.tasks.forEach { launch { run(it, vehicles, id) } } }
             is Task.Until -> until(task, vehicles, id)
@@ -103,13 +105,29 @@ internal class TaskRunner(private val engine: Engine, private val program: Progr
     }
 
     private suspend fun flyOne(task: Task.Fly, vehicle: PlatformVehicle, id: Int) {
-        engine.claim(vehicle.id, task.label)
-        val safe = task.onCancel ?: program.safeState
         engine.emit(EngineEvent.Flying(engine.now(), id, vehicle.id, task.mission))
+        steer(task.label, vehicle, task.onCancel) {
+            engine.platform.fly(vehicle, task.mission) { engine.emit(EngineEvent.Mission(engine.now(), id, vehicle.id, it)) }
+        }
+    }
+
+    private suspend fun flyQueue(task: Task.FlyQueue, vehicles: VehicleSet, id: Int) {
+        val vehicle = vehicles.singleOrNull() ?: throw if (vehicles.isEmpty()) UnboundTask(task.label) else QueueNeedsOneVehicle(vehicles.size)
+        steer(task.label, vehicle, task.onCancel) { engine.platform.flyQueue(vehicle, task.queue, task.whenEmpty) }
+    }
+
+    /**
+     * Runs [flight] with [vehicle] claimed for [label]: fails with [VehicleLost] once the vehicle is
+     * unheard for the connection timeout, and makes it safe ([onCancel] or the program's choice)
+     * when the flight fails or is cancelled.
+     */
+    private suspend fun steer(label: String, vehicle: PlatformVehicle, onCancel: SafeState?, flight: suspend () -> Unit) {
+        engine.claim(vehicle.id, label)
+        val safe = onCancel ?: program.safeState
         try {
             coroutineScope {
-                val watchdog = launch { awaitLost(vehicle, task) }
-                engine.platform.fly(vehicle, task.mission) { engine.emit(EngineEvent.Mission(engine.now(), id, vehicle.id, it)) }
+                val watchdog = launch { awaitLost(vehicle, label) }
+                flight()
                 watchdog.cancel()
             }
         } catch (e: VehicleLost) {
@@ -123,13 +141,13 @@ internal class TaskRunner(private val engine: Engine, private val program: Progr
     }
 
     /** Throws [VehicleLost] once [vehicle] has been unheard for the program's connection timeout. */
-    private suspend fun awaitLost(vehicle: PlatformVehicle, task: Task.Fly) {
+    private suspend fun awaitLost(vehicle: PlatformVehicle, label: String) {
         while (true) {
             awaitValue(engine.revision) { if (read(vehicle.connection) == ConnectionState.LOST) Unit else null }
             val back = withTimeoutOrNull(engine.wall(program.connectionTimeout)) {
                 awaitValue(engine.revision) { if (read(vehicle.connection) == ConnectionState.CONNECTED) Unit else null }
             }
-            if (back == null) throw VehicleLost(vehicle.id, "mission '${task.label}'")
+            if (back == null) throw VehicleLost(vehicle.id, "mission '$label'")
         }
     }
 

@@ -30,6 +30,16 @@ public interface Platform {
      */
     public suspend fun fly(vehicle: PlatformVehicle, mission: Mission, report: suspend (MissionEvent) -> Unit)
 
+    /**
+     * Flies [queue] on [vehicle] (see [pod.core.queue.MissionQueue]) until it runs empty (with
+     * [whenEmpty] COMPLETE) or the caller is cancelled, like [fly]: typed exceptions when the
+     * vehicle refuses or is lost, no safe state of its own on cancellation. Platforms that cannot
+     * steer a vehicle element by element throw [pod.core.queue.QueueUnsupported].
+     */
+    public suspend fun flyQueue(vehicle: PlatformVehicle, queue: pod.core.queue.MissionQueue, whenEmpty: pod.core.queue.WhenEmpty) {
+        throw pod.core.queue.QueueUnsupported(this::class.simpleName ?: "this platform")
+    }
+
     /** Puts [vehicle] in [state] (hold where it is, or return home) and returns once it is confirmed. */
     public suspend fun makeSafe(vehicle: PlatformVehicle, state: SafeState)
 }

@@ -21,9 +21,19 @@ import kotlin.time.TimeSource
  * `pod.mavlink.queue.QueueFlight`) follows [state], commands the vehicle, and reports arrivals
  * ([arrived]) and the passing of time ([expire]). Calls are safe from any thread; each change is
  * applied atomically and published on [state], [status] and [events]. Durations are counted on
- * [clock] (pass the station's or the test scheduler's).
+ * [clock] (pass the station's or the test scheduler's), in vehicle time: [timeScale] seconds of it
+ * per second of [clock] (a simulator running faster than the wall clock; in a program,
+ * `missionQueue()` passes the platform's).
  */
-public class MissionQueue(private val clock: TimeSource.WithComparableMarks = TimeSource.Monotonic) {
+public class MissionQueue(
+    private val clock: TimeSource = TimeSource.Monotonic,
+    /** Seconds of vehicle time per second of the clock (1 for real vehicles). */
+    public val timeScale: Double = 1.0,
+) {
+    init {
+        require(timeScale > 0 && timeScale.isFinite()) { "timeScale must be a positive number, was $timeScale" }
+    }
+
     private val origin = clock.markNow()
     private val _state = MutableStateFlow(QueueState())
     private val _status = MutableStateFlow(QueueStatus.EMPTY)
@@ -49,8 +59,8 @@ public class MissionQueue(private val clock: TimeSource.WithComparableMarks = Ti
     /** Who is flying the queue now (a vehicle's name), or null. */
     public val flyer: StateFlow<String?> = _flyer.asStateFlow()
 
-    /** Time on the queue's clock since it was made. */
-    public fun now(): Duration = origin.elapsedNow()
+    /** Vehicle time since the queue was made. */
+    public fun now(): Duration = origin.elapsedNow() * timeScale
 
     /** Adds [element] at the end; it flies at once when the queue is empty. */
     public fun append(element: QueueElement): QueueEntry = insert(InsertMode.APPEND, element)
@@ -207,3 +217,24 @@ public class QueueBusy(
     /** Who asked. */
     public val asker: String,
 ) : PodException("the queue is already flown by $holder; $asker cannot fly it too (one queue steers one vehicle)")
+
+/** What a flight of a queue does when the queue runs empty; either way the vehicle holds where it is. */
+public enum class WhenEmpty {
+    /** The flight completes (Paparazzi hands control back to the flight plan there). */
+    COMPLETE,
+
+    /** The flight goes on holding and flies whatever is added next, until cancelled. */
+    WAIT,
+}
+
+/** The platform cannot fly a mission queue. */
+public class QueueUnsupported(
+    /** The platform. */
+    public val platform: String,
+) : PodException("$platform cannot fly a mission queue")
+
+/** A queue task was bound to more than one vehicle: a queue steers one vehicle. */
+public class QueueNeedsOneVehicle(
+    /** How many it was bound to. */
+    public val vehicles: Int,
+) : PodException("a mission queue steers one vehicle, but the task was bound to $vehicles")

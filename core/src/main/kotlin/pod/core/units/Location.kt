@@ -38,6 +38,16 @@ public data class Location(
         return Location(latitude + dLat, longitude + dLon, altitude + up)
     }
 
+    /**
+     * How far [other] lies north and east of this location, on the local flat earth [offset] uses
+     * (its inverse within millimetres over a few kilometres).
+     */
+    public fun northEastTo(other: Location): Pair<Distance, Distance> {
+        val north = (other.latitude - latitude).deg.radians * EARTH_RADIUS_M
+        val east = (other.longitude - longitude).deg.radians * EARTH_RADIUS_M * cos(latitude.deg.radians)
+        return Distance(north) to Distance(east)
+    }
+
     override fun toString(): String =
         "(${latitude.format(7)}, ${longitude.format(7)}, $altitude)"
 

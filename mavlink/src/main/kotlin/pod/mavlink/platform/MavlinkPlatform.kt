@@ -44,6 +44,8 @@ public class MavlinkPlatform(
      * ([MavlinkVehicle.payloads]), as it reports it.
      */
     private val payloads: ((MavlinkVehicle) -> Set<String>)? = null,
+    /** How queue tasks fly ([pod.mavlink.queue.QueueFlight]). */
+    public val queueFlight: pod.mavlink.queue.QueueFlightConfig = pod.mavlink.queue.QueueFlightConfig(),
 ) : Platform {
     private val adapters = HashMap<Int, MavlinkPlatformVehicle>()
     private val _vehicles = MutableStateFlow(adapt(usable(station.vehicles.value.values.map { it to lacking(it) })))
@@ -76,6 +78,11 @@ public class MavlinkPlatform(
 
     override suspend fun fly(vehicle: PlatformVehicle, mission: Mission, report: suspend (MissionEvent) -> Unit) {
         MissionExecutor(mavlink(vehicle), mission, timing).run(report)
+    }
+
+    /** Flies [queue] on [vehicle] in its guided mode ([pod.mavlink.queue.QueueFlight]). */
+    override suspend fun flyQueue(vehicle: PlatformVehicle, queue: pod.core.queue.MissionQueue, whenEmpty: pod.core.queue.WhenEmpty) {
+        pod.mavlink.queue.QueueFlight(mavlink(vehicle), queue, queueFlight).fly(whenEmpty)
     }
 
     /**

@@ -1,0 +1,108 @@
+package pod.mavlink.queue
+
+import pod.core.units.Distance
+import pod.core.units.Location
+import pod.core.units.m
+import pod.core.vehicle.Autopilot
+import pod.core.vehicle.VehicleType
+import pod.mavlink.MavFrames
+import pod.mavlink.MavlinkVehicle
+import pod.mavlink.command.MavCommandParams.REPOSITION_FLAG_CHANGE_MODE
+import pod.mavlink.command.MavCommands.DO_REPOSITION
+import pod.mavlink.command.VehicleCommand
+import kotlin.math.PI
+import kotlin.math.atan2
+import kotlin.math.cos
+import kotlin.math.sin
+
+/**
+ * How a queue flight steers one vehicle outside any mission: every change is one acknowledged
+ * command, so a change the link loses leaves the vehicle flying the old element, never half of a
+ * new one. Targets are absolute (altitude above sea level), as DO_REPOSITION takes them.
+ *
+ * Per autopilot (sources checked, see docs/mission-queue.md):
+ * - a point: DO_REPOSITION as COMMAND_INT with the change-mode flag, which switches an ArduPilot
+ *   vehicle to GUIDED and a PX4 one to Hold (AUTO.LOITER) by itself (ArduCopter/GCS_Mavlink.cpp and
+ *   ArduPlane/GCS_Mavlink.cpp handle_command_int_do_reposition; PX4 navigator's DO_REPOSITION);
+ * - a circle on an ArduPlane: the same DO_REPOSITION with param3 the radius and param4 non-zero for
+ *   counter-clockwise (ArduPlane handle_command_int_do_reposition → mode_guided.set_radius_and_direction);
+ * - a circle on PX4, multicopter or plane: DO_ORBIT, radius signed as Pod's (positive clockwise;
+ *   Commander switches to the orbit state);
+ * - a circle on an ArduCopter: GUIDED has no orbit and its CIRCLE mode puts the centre ahead of the
+ *   vehicle (AC_Circle::init), so the ground flies it: a target on the circle a little ahead of the
+ *   vehicle, moved on every [CircleCarrot] step.
+ */
+internal class GuidedSteering(private val vehicle: MavlinkVehicle) {
+    private val autopilot: Autopilot get() = vehicle.identity.value.autopilot
+    private val type: VehicleType get() = vehicle.identity.value.type
+
+    val isPlane: Boolean get() = type == VehicleType.FIXED_WING || type == VehicleType.VTOL
+
+    /** Whether circles are flown from the ground, target by target (ArduCopter). */
+    val circlesFromGround: Boolean get() = autopilot != Autopilot.PX4 && !isPlane
+
+    /** Flies to [target] and holds there (a plane circles it at its default loiter radius). */
+    suspend fun goTo(target: Location) {
+        vehicle.commands.send(reposition(target))
+    }
+
+    /** Circles [center] at [radius], positive clockwise, where the autopilot can do it alone. */
+    suspend fun circle(center: Location, radius: Distance) {
+        val command = when {
+            autopilot == Autopilot.PX4 -> VehicleCommand(
+                DO_ORBIT,
+                param1 = radius.meters.toFloat(),
+                param2 = Float.NaN,
+                param3 = Float.NaN,
+                param4 = Float.NaN,
+                param5 = center.latitude, param6 = center.longitude, param7 = center.altitude.meters.toFloat(),
+                frame = MavFrames.GLOBAL_INT,
+            )
+            isPlane -> reposition(center).copy(
+                param3 = kotlin.math.abs(radius.meters).toFloat(),
+                param4 = if (radius.meters < 0) 1f else 0f,
+            )
+            else -> error("an ArduCopter circle is flown from the ground (CircleCarrot)")
+        }
+        vehicle.commands.send(command)
+    }
+
+    private fun reposition(target: Location) = VehicleCommand(
+        DO_REPOSITION,
+        param1 = -1f,
+        param2 = REPOSITION_FLAG_CHANGE_MODE.toFloat(),
+        param3 = 0f,
+        param4 = Float.NaN,
+        param5 = target.latitude, param6 = target.longitude, param7 = target.altitude.meters.toFloat(),
+        frame = MavFrames.GLOBAL_INT,
+    )
+
+    companion object {
+        /** MAV_CMD_DO_ORBIT. */
+        const val DO_ORBIT: Int = 34
+    }
+}
+
+/**
+ * The ground's circle for a vehicle that cannot orbit a given centre by itself: a target on the
+ * circle [lead] ahead of the vehicle's bearing from the centre, in the circle's direction. Pure
+ * geometry; the caller moves the target every step.
+ */
+internal object CircleCarrot {
+    /** The target on the circle around [center] (radius signed, positive clockwise) for a vehicle at [here]. */
+    fun target(center: Location, radius: Distance, here: Location, lead: Double): Location {
+        val (north, east) = northEast(center, here)
+        val bearing = if (north == 0.0 && east == 0.0) 0.0 else atan2(east, north)
+        val step = if (radius.meters > 0) lead else -lead
+        val r = kotlin.math.abs(radius.meters)
+        val angle = bearing + step
+        return center.offset((r * cos(angle)).m, (r * sin(angle)).m)
+    }
+
+    /** The lead angle (radians) for a vehicle flying [speed] m/s on a circle of [radius]: about [ahead] seconds, at most 60°. */
+    fun lead(radius: Distance, speed: Double, ahead: Double): Double =
+        (speed * ahead / kotlin.math.abs(radius.meters)).coerceIn(0.2, PI / 3)
+
+    private fun northEast(from: Location, to: Location): Pair<Double, Double> =
+        from.northEastTo(to).let { (n, e) -> n.meters to e.meters }
+}

@@ -1,0 +1,206 @@
+package pod.mavlink.queue
+
+import kotlinx.coroutines.awaitCancellation
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.flow.collectLatest
+import kotlinx.coroutines.flow.combine
+import kotlinx.coroutines.flow.distinctUntilChanged
+import kotlinx.coroutines.flow.dropWhile
+import kotlinx.coroutines.flow.filterNotNull
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.flow.map
+import kotlinx.coroutines.flow.transformWhile
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.withTimeoutOrNull
+import pod.core.mission.SurveyPlanner
+import pod.core.queue.MissionQueue
+import pod.core.queue.QueueEntry
+import pod.core.queue.QueuePattern
+import pod.core.queue.WhenEmpty
+import pod.core.units.Distance
+import pod.core.units.Location
+import pod.core.units.m
+import pod.core.vehicle.isAirborne
+import pod.mavlink.MavlinkVehicle
+import pod.mavlink.command.CommandTimeout
+import kotlin.math.abs
+import kotlin.time.Duration
+
+/**
+ * Flies a [MissionQueue] on one MAVLink vehicle, element by element, in the vehicle's guided mode
+ * ([GuidedSteering]): the ground holds the queue, so an insertion, a replacement or `next()` takes
+ * effect with one acknowledged command (one round trip), and no mission on board is touched.
+ *
+ * It follows the queue's current element: a new one is commanded at once, the previous one's
+ * commands are abandoned; arrival (within [QueueFlightConfig.arrivalRadius]) ends a goto, segment,
+ * path or survey; the element's duration is timed here, on the station's clock; the target is
+ * sent again every [QueueFlightConfig.refresh], so a vehicle that took a stale command late is put
+ * right within that time. When the queue runs empty the vehicle holds where it is, at its altitude
+ * (a plane circles there), and [fly] returns ([WhenEmpty.COMPLETE]) or waits for more
+ * ([WhenEmpty.WAIT]). It starts with the queue's first element, waiting for one if the queue is empty.
+ *
+ * The vehicle must be flying: [QueueNotFlyable] otherwise. A command the vehicle refuses ends the
+ * flight with [QueueElementRefused]; one that goes unanswered is sent again until the vehicle
+ * answers or is lost. Cancelling [fly] leaves the vehicle where the last command put it: the caller
+ * (the engine) makes it safe.
+ */
+public class QueueFlight(
+    private val vehicle: MavlinkVehicle,
+    private val queue: MissionQueue,
+    private val config: QueueFlightConfig = QueueFlightConfig(),
+) {
+    private val steering = GuidedSteering(vehicle)
+
+    /** Flies the queue until it runs empty (see [WhenEmpty]) or the caller is cancelled. */
+    public suspend fun fly(whenEmpty: WhenEmpty = WhenEmpty.COMPLETE) {
+        val release = queue.claim(vehicle.toString())
+        try {
+            if (!airborne()) throw QueueNotFlyable(vehicle.systemId, "it is not flying (take off first)")
+            val home = awaitHome()
+            val arrival = arrivalRadius()
+            coroutineScope {
+                val clock = launch { keepTime() }
+                queue.state.map { it.current }.distinctUntilChanged()
+                    .dropWhile { it == null }
+                    .transformWhile { emit(it); it != null || whenEmpty == WhenEmpty.WAIT }
+                    .collectLatest { entry -> if (entry == null) holdHere() else fly(entry, home, arrival) }
+                clock.cancel()
+            }
+        } finally {
+            release()
+        }
+    }
+
+    /** Ends elements whose duration runs out, on time, and refreshes the status about once a second. */
+    private suspend fun keepTime() {
+        while (true) {
+            queue.expire()
+            val now = queue.now()
+            val untilDeadline = queue.state.value.deadline?.let { it - now }
+            val wait = listOfNotNull(untilDeadline?.div(queue.timeScale), config.statusPeriod).min()
+            delay(wait.coerceAtLeast(Duration.ZERO))
+        }
+    }
+
+    private suspend fun fly(entry: QueueEntry, home: Location, arrival: Distance) {
+        val height = entry.element.altitude ?: currentHeight()
+        fun at(point: pod.core.queue.QueuePoint) = absolute(point.resolve(home, height), home)
+        when (val pattern = entry.element.pattern) {
+            is QueuePattern.Goto -> through(listOf(at(pattern.point)), arrival)
+            is QueuePattern.Segment -> through(listOf(at(pattern.from), at(pattern.to)), arrival)
+            is QueuePattern.Path -> through(pattern.points.map(::at), arrival)
+            is QueuePattern.Survey -> {
+                val start = pattern.start.resolve(home, height)
+                val points = SurveyPlanner.lawnMower(start, pattern.length, pattern.width, pattern.spacing, pattern.direction, height)
+                through(points.map { absolute(it, home) }, arrival)
+            }
+            is QueuePattern.Circle -> {
+                circle(at(pattern.center), pattern.radius)
+                awaitCancellation()
+            }
+            QueuePattern.Hold -> {
+                val here = vehicle.telemetry.position.value?.location ?: home
+                steadily(absolute(here.copy(altitude = height), home)) { awaitCancellation() }
+            }
+            QueuePattern.Land -> {
+                accepted { vehicle.action.land() }
+                vehicle.action.awaitLanded(config.landingTimeout)
+            }
+            QueuePattern.ReturnHome -> {
+                accepted { vehicle.action.returnToLaunch() }
+                if (steering.isPlane) awaitNear(home, arrival, ignoreAltitude = true) else vehicle.action.awaitLanded(config.landingTimeout)
+            }
+        }
+        queue.arrived(entry.id)
+    }
+
+    /** Flies through [points] in order, each one reached before the next is commanded. */
+    private suspend fun through(points: List<Location>, arrival: Distance) {
+        for (point in points) steadily(point) { awaitNear(point, arrival, ignoreAltitude = steering.isPlane) }
+    }
+
+    /** Commands [target], then runs [until], sending the target again every refresh period. */
+    private suspend fun steadily(target: Location, until: suspend () -> Unit) = coroutineScope {
+        accepted { steering.goTo(target) }
+        val refresh = launch {
+            while (true) {
+                delay(config.refresh)
+                accepted { steering.goTo(target) }
+            }
+        }
+        until()
+        refresh.cancel()
+    }
+
+    private suspend fun circle(center: Location, radius: Distance) {
+        if (!steering.circlesFromGround) {
+            accepted { steering.circle(center, radius) }
+            while (true) {
+                delay(config.refresh)
+                accepted { steering.circle(center, radius) }
+            }
+        }
+        while (true) {
+            val here = vehicle.telemetry.position.value?.location ?: center
+            val lead = CircleCarrot.lead(radius, config.circleSpeed, config.circleStep.inWholeMilliseconds / 1000.0 * 3)
+            accepted { steering.goTo(CircleCarrot.target(center, radius, here, lead).copy(altitude = center.altitude)) }
+            delay(config.circleStep)
+        }
+    }
+
+    private suspend fun holdHere() {
+        if (!airborne()) return
+        val here = vehicle.telemetry.position.value?.location ?: return
+        accepted { steering.goTo(here) }
+    }
+
+    /** Runs [command] until the vehicle answers it: a command lost [CommandTimeout] is sent again; a refusal ends the flight. */
+    private suspend fun accepted(command: suspend () -> Unit) {
+        while (true) {
+            try {
+                command()
+                return
+            } catch (e: CommandTimeout) {
+                continue
+            } catch (e: pod.mavlink.command.CommandRejected) {
+                throw QueueElementRefused(vehicle.systemId, queue.state.value.current, e)
+            } catch (e: pod.mavlink.action.ActionException) {
+                throw QueueElementRefused(vehicle.systemId, queue.state.value.current, e)
+            }
+        }
+    }
+
+    private suspend fun awaitNear(target: Location, within: Distance, ignoreAltitude: Boolean) {
+        combine(vehicle.telemetry.position, vehicle.connection) { p, _ -> p }.filterNotNull().first { p ->
+            val horizontal = p.location.copy(altitude = target.altitude).distanceTo(target).meters
+            horizontal <= within.meters && (ignoreAltitude || abs(p.location.altitude.meters - target.altitude.meters) <= config.altitudeTolerance.meters)
+        }
+    }
+
+    private fun airborne(): Boolean = vehicle.telemetry.let { isAirborne(it.landedState.value, it.position.value?.relativeAltitude, it.armed.value) }
+
+    private fun currentHeight(): Distance = vehicle.telemetry.position.value?.relativeAltitude ?: config.defaultHeight
+
+    /** [location] (altitude above home) as an altitude above sea level. */
+    private fun absolute(location: Location, home: Location): Location = location.copy(altitude = (home.altitude.meters + location.altitude.meters).m)
+
+    private suspend fun awaitHome(): Location {
+        vehicle.telemetry.home.value?.let { return it }
+        return withTimeoutOrNull(config.homeTimeout) { vehicle.telemetry.home.filterNotNull().first() }
+            ?: throw QueueNotFlyable(vehicle.systemId, "it reported no home within ${config.homeTimeout}")
+    }
+
+    /** How close counts as arrived: the configured radius, or per airframe (a plane: its loiter radius and a margin). */
+    private suspend fun arrivalRadius(): Distance {
+        config.arrivalRadius?.let { return it }
+        if (!steering.isPlane) return QueueFlightConfig.MULTIROTOR_ARRIVAL
+        val name = if (vehicle.identity.value.autopilot == pod.core.vehicle.Autopilot.PX4) "NAV_LOITER_RAD" else "WP_LOITER_RAD"
+        val loiter = try {
+            withTimeoutOrNull(config.paramTimeout) { abs(vehicle.params.read(name).value) }
+        } catch (e: pod.core.PodException) {
+            null
+        }
+        return ((loiter ?: QueueFlightConfig.PLANE_LOITER_GUESS.meters) + QueueFlightConfig.PLANE_ARRIVAL_MARGIN.meters).m
+    }
+}
