@@ -1,0 +1,145 @@
+package pod.e2e
+
+import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.collections.shouldContainInOrder
+import io.kotest.matchers.doubles.shouldBeGreaterThan
+import io.kotest.matchers.doubles.shouldBeLessThan
+import io.kotest.matchers.shouldBe
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.async
+import kotlinx.coroutines.flow.filterIsInstance
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.flow.toList
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.withTimeout
+import pod.core.queue.EndReason
+import pod.core.queue.MissionQueue
+import pod.core.queue.QueueEvent
+import pod.core.queue.at
+import pod.core.units.m
+import pod.core.vehicle.Autopilot
+import pod.core.vehicle.VehicleType
+import pod.dsl.queue.circle
+import pod.dsl.queue.goto
+import pod.dsl.queue.path
+import pod.dsl.queue.segment
+import pod.mavlink.MavlinkVehicle
+import pod.mavlink.queue.QueueFlight
+import pod.sim.SimVehicle
+import pod.sim.SimVehicleConfig
+import pod.sim.fault.LinkFaults
+import kotlin.math.abs
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.minutes
+import kotlin.time.Duration.Companion.seconds
+
+/**
+ * The issue's scenario on each autopilot, checked from the track the simulated vehicle really
+ * flies: append three gotos; prepend a counter-clockwise circle for 60 s; replace the current
+ * element with a segment; replace everything with a five-point path; skip the rest of it with
+ * `next()`. Plane patterns are [Flavour.scale] times larger (a plane cannot turn on a copter's
+ * circle).
+ */
+class QueueFlightSpec : StringSpec({
+
+    for (flavour in Flavour.entries.filter { it.ready }) {
+        "${flavour.label}: appended gotos, a prepended timed circle, a replaced segment and a replacing path are flown as the queue says" {
+            virtualRun(seed = 14) { flying(flavour.config) { v, sim -> scenario(flavour, v, sim, lossy = false) } }
+        }
+    }
+})
+
+internal enum class Flavour(val label: String, val config: SimVehicleConfig, val scale: Double, val corridor: Double, val ready: Boolean) {
+    ARDUCOPTER("ArduCopter", SimVehicleConfig(systemId = 61), 1.0, 4.0, true),
+    ARDUPLANE("ArduPlane", SimVehicleConfig(systemId = 62, type = VehicleType.FIXED_WING), 6.0, 40.0, false),
+    PX4_COPTER("PX4 copter", SimVehicleConfig(systemId = 63, autopilot = Autopilot.PX4), 1.0, 4.0, false),
+}
+
+/** Takes off, runs the scenario on [v]'s queue while recording the flown track, and checks it. */
+internal suspend fun CoroutineScope.scenario(flavour: Flavour, v: MavlinkVehicle, sim: SimVehicle, lossy: Boolean) {
+    val k = flavour.scale
+    val height = 30.0
+    Flights.keepArmedOnGround(v)
+    v.action.arm()
+    v.action.takeoff((if (flavour.config.type == VehicleType.FIXED_WING) 60 else 30).m)
+    val home = v.telemetry.home.value!!
+    val queue: MissionQueue = v.queue
+    val events = mutableListOf<QueueEvent>()
+    val recording = launch { queue.events.toList(events) }
+    val track = FlownTrack(queue, sim, home)
+    val sampling = track.start(this)
+    val flight = async { QueueFlight(v, queue).fly() }
+
+    val g1 = queue.append(goto(at((80 * k).m, 0.m), altitude = height.m))
+    val g2 = queue.append(goto(at((80 * k).m, (80 * k).m), altitude = height.m))
+    queue.append(goto(at(0.m, (80 * k).m), altitude = height.m))
+    awaitEvent(queue) { it is QueueEvent.Started && it.entry == g2 }
+
+    val center = 40 * k to 40 * k
+    val radius = 25 * k
+    val circle = queue.prepend(circle(at(center.first.m, center.second.m), (-radius).m, altitude = height.m, duration = 60.seconds))
+    val circleStart = queue.now()
+    val circleEnd = awaitEvent(queue) { it is QueueEvent.Ended && it.entry == circle } as QueueEvent.Ended
+    circleEnd.reason shouldBe EndReason.ELAPSED
+    (circleEnd.at - circleStart) shouldBe 60.seconds
+
+    val from = 40 * k to -20 * k
+    val to = -40 * k to -20 * k
+    val seg = queue.replaceCurrent(segment(at(from.first.m, from.second.m), at(to.first.m, to.second.m), altitude = height.m))
+    val segStart = queue.now()
+    val segEnd = awaitEvent(queue) { it is QueueEvent.Ended && it.entry == seg } as QueueEvent.Ended
+    segEnd.reason shouldBe EndReason.ARRIVED
+
+    val points = listOf(0.0 to 0.0, 30.0 to 30.0, 60.0 to 0.0, 30.0 to -30.0, 0.0 to -60.0).map { (n, e) -> n * k to e * k }
+    val pathEntry = queue.replaceAll(path(points.map { (n, e) -> at(n.m, e.m) }, altitude = height.m))
+    val pathStart = queue.now()
+    withTimeout(30.minutes) { sim.state.first { s -> home.northEastTo(s.location).let { (n, e) -> kotlin.math.hypot(n.meters - points[2].first, e.meters - points[2].second) < arrival(flavour) } } }
+    val skippedAt = queue.now()
+    queue.next()
+    withTimeout(5.minutes) { flight.await() }
+    // Holding: watch a while longer.
+    kotlinx.coroutines.delay(40.seconds)
+    sampling.cancel()
+    recording.cancel()
+
+    // Order of what the queue flew.
+    events.filterIsInstance<QueueEvent.Ended>().map { it.entry.id to it.reason } shouldContainInOrder listOf(
+        g1.id to EndReason.ARRIVED, g2.id to EndReason.PREEMPTED, circle.id to EndReason.ELAPSED,
+        g2.id to EndReason.REPLACED, seg.id to EndReason.ARRIVED, pathEntry.id to EndReason.SKIPPED,
+    )
+    queue.state.value.isEmpty shouldBe true
+
+    // The circle: once on it, inside the corridor, counter-clockwise, until its 60 s ran out.
+    val onCircle = track.between(circleStart, circleEnd.at).dropWhile { abs(it.distanceTo(center.first, center.second) - radius) > flavour.corridor / 2 }
+    onCircle.forEach { abs(it.distanceTo(center.first, center.second) - radius) shouldBeLessThan flavour.corridor }
+    (onCircle.signedArea(center) > 0) shouldBe true // counter-clockwise seen from above
+    onCircle.degreesAround(center) shouldBeGreaterThan (if (k > 1) 180.0 else 300.0)
+    // Its duration honoured at the vehicle: still circling 2 s before the end, heading away within 2 s after.
+    val justBefore = track.between(circleEnd.at - 2.seconds, circleEnd.at - 1.seconds).first()
+    abs(justBefore.distanceTo(center.first, center.second) - radius) shouldBeLessThan flavour.corridor
+    val after = track.between(circleEnd.at + 2.seconds, circleEnd.at + 6.seconds)
+    after.first().distanceTo(from.first, from.second) shouldBeGreaterThan after.last().distanceTo(from.first, from.second)
+
+    // The segment: once at its start, along the line to its end.
+    val onSegment = track.between(segStart, segEnd.at).dropWhile { it.distanceTo(from.first, from.second) > arrival(flavour) }
+    onSegment.isNotEmpty() shouldBe true
+    onSegment.forEach { it.offSegment(from, to) shouldBeLessThan flavour.corridor }
+
+    // The path: its first three points in order, then no further after next().
+    val flownPath = track.between(pathStart, skippedAt)
+    val reachedAt = points.take(3).map { p -> flownPath.indexOfFirst { it.distanceTo(p.first, p.second) < arrival(flavour) + 1 } }
+    reachedAt.none { it < 0 } shouldBe true
+    reachedAt shouldBe reachedAt.sorted()
+
+    // Holding at altitude at the end, never descending.
+    val holding = track.between(skippedAt + 20.seconds, track.last().at)
+    holding.forEach { it.height shouldBeGreaterThan height - 3 }
+    if (flavour.config.type != VehicleType.FIXED_WING) {
+        holding.forEach { it.distanceTo(holding.first().north, holding.first().east) shouldBeLessThan 3.0 }
+    }
+}
+
+private fun arrival(flavour: Flavour): Double = if (flavour.config.type == VehicleType.FIXED_WING) 100.0 else 3.0
+
+private suspend fun awaitEvent(queue: MissionQueue, timeout: Duration = 30.minutes, match: (QueueEvent) -> Boolean): QueueEvent =
+    withTimeout(timeout) { queue.events.filterIsInstance<QueueEvent>().first(match) }
