@@ -3,6 +3,7 @@ package pod.e2e
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.collections.shouldContainInOrder
 import io.kotest.matchers.doubles.shouldBeGreaterThan
+import io.kotest.matchers.comparables.shouldBeLessThan
 import io.kotest.matchers.doubles.shouldBeLessThan
 import io.kotest.matchers.shouldBe
 import kotlinx.coroutines.CoroutineScope
@@ -30,6 +31,7 @@ import pod.sim.SimVehicleConfig
 import pod.sim.fault.LinkFaults
 import kotlin.math.abs
 import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.minutes
 import kotlin.time.Duration.Companion.seconds
 
@@ -44,7 +46,12 @@ class QueueFlightSpec : StringSpec({
 
     for (flavour in Flavour.entries.filter { it.ready }) {
         "${flavour.label}: appended gotos, a prepended timed circle, a replaced segment and a replacing path are flown as the queue says" {
-            virtualRun(seed = 14) { flying(flavour.config) { v, sim -> scenario(flavour, v, sim, lossy = false) } }
+            virtualRun(seed = 14) { flying(flavour.config) { v, sim -> scenario(flavour, v, sim) } }
+        }
+
+        "${flavour.label}: the same under 20 % loss each way, the vehicle leaving every dropped element within ${HEADING_BOUND}" {
+            val lossy = LinkFaults(drop = 0.2, reorder = 0.05, delay = 20.milliseconds, jitter = 10.milliseconds)
+            virtualRun(seed = 15, up = lossy, down = lossy) { flying(flavour.config) { v, sim -> scenario(flavour, v, sim) } }
         }
     }
 })
@@ -56,7 +63,7 @@ internal enum class Flavour(val label: String, val config: SimVehicleConfig, val
 }
 
 /** Takes off, runs the scenario on [v]'s queue while recording the flown track, and checks it. */
-internal suspend fun CoroutineScope.scenario(flavour: Flavour, v: MavlinkVehicle, sim: SimVehicle, lossy: Boolean) {
+internal suspend fun CoroutineScope.scenario(flavour: Flavour, v: MavlinkVehicle, sim: SimVehicle) {
     val k = flavour.scale
     val height = 30.0
     Flights.keepArmedOnGround(v)
@@ -117,8 +124,11 @@ internal suspend fun CoroutineScope.scenario(flavour: Flavour, v: MavlinkVehicle
     // Its duration honoured at the vehicle: still circling 2 s before the end, heading away within 2 s after.
     val justBefore = track.between(circleEnd.at - 2.seconds, circleEnd.at - 1.seconds).first()
     abs(justBefore.distanceTo(center.first, center.second) - radius) shouldBeLessThan flavour.corridor
-    val after = track.between(circleEnd.at + 2.seconds, circleEnd.at + 6.seconds)
-    after.first().distanceTo(from.first, from.second) shouldBeGreaterThan after.last().distanceTo(from.first, from.second)
+    track.headingFor(from, circleEnd.at) shouldBeLessThan HEADING_BOUND
+    // Every change reached the vehicle within the bound: the segment dropped what was current, the
+    // path dropped everything, next() dropped the rest of the path (the vehicle stops).
+    track.headingFor(from, segStart) shouldBeLessThan HEADING_BOUND
+    track.headingFor(points[0], pathStart) shouldBeLessThan HEADING_BOUND
 
     // The segment: once at its start, along the line to its end.
     val onSegment = track.between(segStart, segEnd.at).dropWhile { it.distanceTo(from.first, from.second) > arrival(flavour) }
@@ -131,12 +141,38 @@ internal suspend fun CoroutineScope.scenario(flavour: Flavour, v: MavlinkVehicle
     reachedAt.none { it < 0 } shouldBe true
     reachedAt shouldBe reachedAt.sorted()
 
+    if (flavour.config.type != VehicleType.FIXED_WING) {
+        val stopped = track.samples.zipWithNext().first { (p, q) -> p.at >= skippedAt && q.distanceTo(p.north, p.east) / (q.at - p.at).inWholeMilliseconds * 1000 < 0.5 }.first
+        (stopped.at - skippedAt) shouldBeLessThan HEADING_BOUND + 5.seconds // the command, then braking from cruise speed
+    }
+
     // Holding at altitude at the end, never descending.
     val holding = track.between(skippedAt + 20.seconds, track.last().at)
     holding.forEach { it.height shouldBeGreaterThan height - 3 }
     if (flavour.config.type != VehicleType.FIXED_WING) {
         holding.forEach { it.distanceTo(holding.first().north, holding.first().east) shouldBeLessThan 3.0 }
     }
+}
+
+/** How soon after a change the vehicle must be heading for the new element (one refresh period of QueueFlight). */
+internal val HEADING_BOUND: Duration = 3.seconds
+
+/**
+ * How long after [since] the vehicle first flew towards [target] (north, east), its velocity
+ * (from consecutive samples) within 45° of the bearing to it; infinite when it never did.
+ */
+internal fun FlownTrack.headingFor(target: Pair<Double, Double>, since: Duration): Duration {
+    val pairs = samples.filter { it.at >= since }.zipWithNext()
+    val first = pairs.firstOrNull { (p, q) ->
+        val vn = q.north - p.north
+        val ve = q.east - p.east
+        val tn = target.first - p.north
+        val te = target.second - p.east
+        val speed = kotlin.math.hypot(vn, ve)
+        val dist = kotlin.math.hypot(tn, te)
+        speed > 1e-3 && dist > 1e-3 && (vn * tn + ve * te) / (speed * dist) > 0.7
+    } ?: return Duration.INFINITE
+    return first.first.at - since
 }
 
 private fun arrival(flavour: Flavour): Double = if (flavour.config.type == VehicleType.FIXED_WING) 100.0 else 3.0
