@@ -125,8 +125,10 @@ internal object MultirotorAirframe : Airframe {
         val theta = atan2(e, n)
         val sign = if (g.clockwise) 1.0 else -1.0
         // A commanded circle speed (PX4's orbit, already limited by the autopilot) may exceed the
-        // cruise speed; the approach to the circle stays at cruise speed.
-        val tangential = g.speed ?: min(perf.cruise, g.radius * Math.toRadians(perf.circleRate))
+        // cruise speed; the approach to the circle stays at cruise speed. Otherwise ArduCopter's
+        // circle: the circle rate, at most the waypoint speed and √(½·accel·r), which keeps half
+        // the acceleration for turning (libraries/AC_WPNav/AC_Circle.cpp, calc_velocities).
+        val tangential = g.speed ?: minOf(perf.cruise, g.radius * Math.toRadians(perf.circleRate), sqrt(0.5 * perf.acceleration * g.radius))
         val limit = maxOf(perf.cruise, tangential)
         val radial = (-(d - g.radius) * 0.5).coerceIn(-perf.cruise, perf.cruise)
         var vN = cos(theta) * radial + cos(theta + sign * Math.PI / 2) * tangential

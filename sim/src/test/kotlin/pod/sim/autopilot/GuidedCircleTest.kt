@@ -106,4 +106,26 @@ class GuidedCircleTest : StringSpec({
         stopped.radiusRange.endInclusive shouldBeLessThan 0.5
         stopped.meanSpeed shouldBeLessThan 0.05
     }
+
+    "ArduCopter CIRCLE: CIRCLE_RADIUS around a point ahead, CIRCLE_RATE's sign the direction, at most √(½·WPNAV_ACCEL·r)" {
+        for ((rate, clockwise) in listOf(20.0 to true, -20.0 to false)) {
+            val ap = autopilot()
+            ap.params.set("CIRCLE_RADIUS", 4000.0) // cm
+            ap.params.set("CIRCLE_RATE", rate)
+            ap.params.set("WPNAV_SPEED", 1500.0) // cm/s, so the acceleration limit is the one that binds
+            ap.run(2.5)
+            ap.mode("GUIDED")
+            ap.armCommand()
+            ap.command(CommandRequest(22, z = 10f)) shouldBe CommandResult.ACCEPTED
+            ap.run(8.0)
+            ap.mode("CIRCLE") shouldBe CommandResult.ACCEPTED
+            val circle = ap.activity as Activity.Hold
+            horizontalDistance(circle.center, ap.body.location) shouldBe (40.0 plusOrMinus 0.5)
+            ap.run(30.0)
+            val track = ap.track(circle.center, 60.0)
+            track.meanRadius shouldBe (40.0 plusOrMinus 6.0)
+            if (clockwise) track.signedArea shouldBeGreaterThan 0.0 else track.signedArea shouldBeLessThan 0.0
+            track.meanSpeed shouldBe (kotlin.math.sqrt(0.5 * 2.5 * 40) plusOrMinus 0.5) // WPNAV_ACCEL 250 cm/s²
+        }
+    }
 })
