@@ -23,6 +23,8 @@ public object MavCommands {
     public const val NAV_CONTINUE_AND_CHANGE_ALT: Int = 30
     /** NAV_LOITER_TO_ALT. */
     public const val NAV_LOITER_TO_ALT: Int = 31
+    /** DO_ORBIT: circle a point (param1 radius, negative counter-clockwise; param2 speed; x/y/z centre). */
+    public const val DO_ORBIT: Int = 34
     /** NAV_SPLINE_WAYPOINT. */
     public const val NAV_SPLINE_WAYPOINT: Int = 82
     /** NAV_VTOL_TAKEOFF. */

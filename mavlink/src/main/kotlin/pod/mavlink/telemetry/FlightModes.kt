@@ -8,7 +8,8 @@ import pod.core.vehicle.VehicleType
  * Names of autopilot flight modes, from the custom_mode number a HEARTBEAT carries and back.
  *
  * ArduPilot numbers modes per vehicle family (Copter and Plane tables here); PX4 packs a main mode
- * into bits 16..23 and an AUTO sub-mode into bits 24..31.
+ * into bits 16..23 and a sub-mode of AUTO or POSCTL into bits 24..31, named "MAIN.SUB" here
+ * ("AUTO.LOITER", "POSCTL.ORBIT").
  */
 public object FlightModes {
     private val arduCopter = mapOf(
@@ -34,6 +35,12 @@ public object FlightModes {
         8 to "FOLLOW_TARGET", 9 to "PRECLAND", 10 to "VTOL_TAKEOFF",
     )
 
+    // PX4's orbit (NAVIGATION_STATE_ORBIT, a multicopter circling after DO_ORBIT) is reported as
+    // main mode POSCTL with sub mode PX4_CUSTOM_SUB_MODE_POSCTL_ORBIT = 1
+    // (src/modules/commander/px4_custom_mode.h; get_mavlink_mode_state in commander_helper /
+    // mavlink_messages sets both for NAVIGATION_STATE_ORBIT). Sub mode 0 is plain POSCTL.
+    private val px4PosctlSub = mapOf(1 to "ORBIT")
+
     /** The mode [customMode] means on [autopilot] flying a [type] airframe. */
     public fun decode(autopilot: Autopilot, type: VehicleType, customMode: Long): FlightMode =
         FlightMode(nameOf(autopilot, type, customMode) ?: "MODE($customMode)", customMode)
@@ -46,11 +53,11 @@ public object FlightModes {
         Autopilot.PX4 -> {
             val parts = name.uppercase().split('.')
             val main = px4Main.entries.firstOrNull { it.value == parts[0] }?.key
-            val sub = parts.getOrNull(1)?.let { s -> px4AutoSub.entries.firstOrNull { it.value == s }?.key }
+            val sub = parts.getOrNull(1)?.let { s -> px4SubModes(main).entries.firstOrNull { it.value == s }?.key }
             when {
                 main == null -> null
                 parts.size == 1 -> main.toLong() shl 16
-                sub == null || main != PX4_AUTO -> null
+                sub == null || parts.size > 2 -> null
                 else -> (main.toLong() shl 16) or (sub.toLong() shl 24)
             }
         }
@@ -104,7 +111,7 @@ public object FlightModes {
 
     /** Every mode name Pod knows for [autopilot] flying [type]. */
     public fun names(autopilot: Autopilot, type: VehicleType): List<String> = when (autopilot) {
-        Autopilot.PX4 -> px4Main.values.filter { it != "AUTO" } + px4AutoSub.values.map { "AUTO.$it" }
+        Autopilot.PX4 -> px4Main.values.filter { it != "AUTO" } + px4AutoSub.values.map { "AUTO.$it" } + px4PosctlSub.values.map { "POSCTL.$it" }
         else -> arduTable(type).values.toList()
     }
 
@@ -115,12 +122,17 @@ public object FlightModes {
             val mainName = px4Main[main]
             when {
                 mainName == null -> null
-                main == PX4_AUTO -> px4AutoSub[sub]?.let { "AUTO.$it" } ?: mainName
-                else -> mainName
+                else -> px4SubModes(main)[sub]?.let { "$mainName.$it" } ?: mainName
             }
         }
         Autopilot.ARDUPILOT -> arduTable(type)[customMode.toInt()]
         else -> null
+    }
+
+    private fun px4SubModes(main: Int?): Map<Int, String> = when (main) {
+        PX4_AUTO -> px4AutoSub
+        PX4_POSCTL -> px4PosctlSub
+        else -> emptyMap()
     }
 
     private fun arduTable(type: VehicleType): Map<Int, String> = if (type.isFixedWing) arduPlane else arduCopter
@@ -128,6 +140,7 @@ public object FlightModes {
     private val VehicleType.isFixedWing: Boolean get() = this == VehicleType.FIXED_WING || this == VehicleType.VTOL
 
     private const val PX4_AUTO = 4
+    private const val PX4_POSCTL = 3
 }
 
 /** What a flight mode is for, so actions can pick the right mode on every autopilot. */

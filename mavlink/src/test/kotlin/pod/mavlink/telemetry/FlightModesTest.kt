@@ -37,6 +37,17 @@ class FlightModesTest : StringSpec({
         FlightModes.decode(Autopilot.GENERIC, VehicleType.QUADROTOR, 3).name shouldBe "MODE(3)"
         FlightModes.customMode(Autopilot.ARDUPILOT, VehicleType.FIXED_WING, "ALT_HOLD").shouldBeNull()
         FlightModes.customMode(Autopilot.PX4, VehicleType.QUADROTOR, "POSCTL.MISSION").shouldBeNull()
+        FlightModes.customMode(Autopilot.PX4, VehicleType.QUADROTOR, "AUTO.ORBIT").shouldBeNull()
+        FlightModes.customMode(Autopilot.PX4, VehicleType.QUADROTOR, "POSCTL.ORBIT.X").shouldBeNull()
+    }
+
+    "PX4's orbit (POSCTL main mode 3, sub mode 1) decodes to POSCTL.ORBIT and encodes back; an unknown POSCTL sub mode stays POSCTL" {
+        val orbit = (3L shl 16) or (1L shl 24)
+        FlightModes.decode(Autopilot.PX4, VehicleType.QUADROTOR, orbit).name shouldBe "POSCTL.ORBIT"
+        FlightModes.customMode(Autopilot.PX4, VehicleType.QUADROTOR, "POSCTL.ORBIT") shouldBe orbit
+        FlightModes.customMode(Autopilot.PX4, VehicleType.QUADROTOR, "posctl.orbit") shouldBe orbit
+        FlightModes.decode(Autopilot.PX4, VehicleType.QUADROTOR, (3L shl 16) or (2L shl 24)).name shouldBe "POSCTL"
+        FlightModes.names(Autopilot.PX4, VehicleType.QUADROTOR).contains("POSCTL.ORBIT") shouldBe true
     }
 
     "every mode role names a mode the autopilot has; hold never names a mode that needs sticks" {

@@ -12,6 +12,7 @@ import pod.mavlink.command.MavCommandParams.REPOSITION_FLAG_CHANGE_MODE
 import pod.mavlink.command.MavCommands.COMPONENT_ARM_DISARM
 import pod.mavlink.command.MavCommands.DO_CHANGE_SPEED
 import pod.mavlink.command.MavCommands.DO_LAND_START
+import pod.mavlink.command.MavCommands.DO_ORBIT
 import pod.mavlink.command.MavCommands.DO_PAUSE_CONTINUE
 import pod.mavlink.command.MavCommands.DO_REPOSITION
 import pod.mavlink.command.MavCommands.DO_SET_HOME
@@ -39,9 +40,13 @@ import pod.mavlink.command.CommandResult.UNSUPPORTED
  */
 internal class Commands(private val ap: SimAutopilot) {
     private var calibration: Calibration? = null
+    private val orbit = OrbitCommand(ap)
 
     /** Lines explaining the command being handled, sent with its ack in the flavour's order. */
     private val explanations = ArrayList<SimOutput.Text>()
+
+    /** Lines from the part of the autopilot that acts on an accepted command, sent after its ack. */
+    private val followUps = ArrayList<SimOutput.Text>()
 
     private class Calibration(val request: CommandRequest, var elapsed: Double = 0.0, var reported: Int = 0)
 
@@ -56,6 +61,7 @@ internal class Commands(private val ap: SimAutopilot) {
             NAV_LOITER_UNLIM -> if (ap.isPx4 || !ap.multirotor) UNSUPPORTED else modeResult("LOITER")
             DO_LAND_START -> landStart()
             DO_REPOSITION -> reposition(cmd)
+            DO_ORBIT -> if (ap.isPx4) orbit.handle(cmd, ::refuse) { followUps += SimOutput.Text(Severity.CRITICAL, it) } else UNSUPPORTED
             DO_PAUSE_CONTINUE -> pauseContinue(cmd)
             MISSION_START -> missionStart(cmd)
             DO_SET_MISSION_CURRENT -> setCurrent(cmd)
@@ -103,9 +109,13 @@ internal class Commands(private val ap: SimAutopilot) {
         ap.emit(ack)
         if (!ap.isPx4) explanations.forEach(ap::emit)
         explanations.clear()
+        followUps.forEach(ap::emit)
+        followUps.clear()
     }
 
-    private fun refuse(text: String, severity: Severity = Severity.CRITICAL) {
+    private fun refuse(text: String) = refuse(text, Severity.CRITICAL)
+
+    private fun refuse(text: String, severity: Severity) {
         explanations += SimOutput.Text(severity, text)
     }
 
@@ -184,7 +194,9 @@ internal class Commands(private val ap: SimAutopilot) {
 
     private fun setMode(baseMode: Int, customMode: Long): CommandResult {
         if (baseMode and MODE_FLAG_CUSTOM_MODE_ENABLED == 0) return if (ap.isPx4) TEMPORARILY_REJECTED else UNSUPPORTED
-        val name = FlightModes.decode(ap.autopilot, ap.type, customMode).name
+        // PX4 Commander, VEHICLE_CMD_DO_SET_MODE: a POSCTL sub mode other than SLOW selects plain
+        // POSCTL; only DO_ORBIT enters the orbit.
+        val name = FlightModes.decode(ap.autopilot, ap.type, customMode).name.let { if (it == OrbitCommand.ORBIT) "POSCTL" else it }
         if (name.startsWith("MODE(") || (ap.isPx4 && name == "AUTO")) {
             if (ap.isPx4) refuse("Unsupported mode")
             return if (ap.isPx4) TEMPORARILY_REJECTED else FAILED
@@ -254,12 +266,17 @@ internal class Commands(private val ap: SimAutopilot) {
         if (!ap.isPx4 && !cmd.isInt) return UNSUPPORTED // ArduPilot takes DO_REPOSITION only as COMMAND_INT
         val changeMode = cmd.param2.toInt() and REPOSITION_FLAG_CHANGE_MODE != 0
         val guided = if (ap.isPx4) "AUTO.LOITER" else "GUIDED"
-        if (!ap.isPx4 && ap.modeName != guided && !changeMode) return DENIED
+        val arduPlane = !ap.isPx4 && !ap.multirotor
+        // ArduCopter refuses outside GUIDED before it looks at the location (DENIED); ArduPlane
+        // checks the location first and then answers FAILED (GCS_MAVLINK_Copter / _Plane
+        // ::handle_command_int_do_reposition).
+        if (!ap.isPx4 && !arduPlane && ap.modeName != guided && !changeMode) return DENIED
         val frame = cmd.frame ?: MavFrames.GLOBAL
         if (!MavFrames.isGlobal(frame)) return DENIED
         val lat = cmd.latitude()
         val lon = cmd.longitude()
         if ((lat != null && lat !in -90.0..90.0) || (lon != null && lon !in -180.0..180.0)) return DENIED
+        if (arduPlane && ap.modeName != guided && !changeMode) return FAILED
         if (!ap.armed || !ap.flying) return if (ap.isPx4) TEMPORARILY_REJECTED else FAILED
         if (ap.isPx4 && !changeMode && ap.modeName != guided) return ACCEPTED // PX4 only acts on it in Hold
         val here = ap.body.location
@@ -270,8 +287,32 @@ internal class Commands(private val ap: SimAutopilot) {
         }
         val target = Location(lat ?: here.latitude, lon ?: here.longitude, alt.m)
         if (ap.modeName != guided) ap.setMode(guided)
-        ap.activity = Activity.GoTo(target, cmd.param1.toDouble().takeIf { it > 0 })
+        // ArduCopter flies to the point and stops there whatever param3/param4 say: its handler
+        // passes only the location to ModeGuided::set_destination (ArduCopter/GCS_Mavlink.cpp,
+        // GCS_MAVLINK_Copter::handle_command_int_do_reposition).
+        ap.activity = if (arduPlane) planeGoTo(cmd, target) else Activity.GoTo(target, cmd.param1.toDouble().takeIf { it > 0 })
         return ACCEPTED
+    }
+
+    /**
+     * ArduPlane in GUIDED flies to [target] and circles it (GCS_MAVLINK_Plane::
+     * handle_command_int_do_reposition): param4 NaN or 0 means clockwise, anything else
+     * counter-clockwise; Plane::set_guided_WP also turns counter-clockwise when WP_LOITER_RAD is
+     * negative. A param3 > 0 sets GUIDED's radius and takes the direction from param4 alone
+     * (ModeGuided::set_radius_and_direction); the radius stays until the plane leaves GUIDED, and
+     * none (≤ 1 m) means WP_LOITER_RAD (Plane::update_loiter).
+     */
+    private fun planeGoTo(cmd: CommandRequest, target: Location): Activity.GoTo {
+        val counterClockwise = !(cmd.param4.isNaN() || cmd.param4 == 0f)
+        val loiterRad = ap.params["WP_LOITER_RAD"]
+        val clockwise = if (cmd.param3 > 0f) {
+            ap.guidedRadius = cmd.param3.toDouble().coerceAtMost(UINT16_MAX)
+            !counterClockwise
+        } else {
+            !(counterClockwise || loiterRad < 0)
+        }
+        val radius = ap.guidedRadius.takeIf { it > 1.0 } ?: kotlin.math.abs(loiterRad)
+        return Activity.GoTo(target, null, radius, clockwise)
     }
 
     private fun pauseContinue(cmd: CommandRequest): CommandResult {
@@ -351,5 +392,6 @@ internal class Commands(private val ap: SimAutopilot) {
 
     companion object {
         const val CALIBRATION_SECONDS = 2.0
+        private const val UINT16_MAX = 65535.0
     }
 }

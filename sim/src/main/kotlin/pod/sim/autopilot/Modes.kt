@@ -38,7 +38,8 @@ internal object Modes {
     fun behaviour(autopilot: Autopilot, type: VehicleType, name: String): Behaviour? = when {
         autopilot == Autopilot.PX4 -> when (name) {
             "MANUAL", "STABILIZED", "ACRO", "RATTITUDE", "ALTCTL" -> Behaviour.MANUAL
-            "POSCTL", "OFFBOARD", "AUTO.LOITER", "AUTO.READY", "AUTO.FOLLOW_TARGET" -> Behaviour.HOLD
+            // POSCTL.ORBIT: OrbitCommand sets the circle; entered otherwise it holds here.
+            "POSCTL", "OFFBOARD", "AUTO.LOITER", "AUTO.READY", "AUTO.FOLLOW_TARGET", "POSCTL.ORBIT" -> Behaviour.HOLD
             "AUTO.MISSION" -> Behaviour.AUTO
             "AUTO.RTL" -> Behaviour.RTL
             "AUTO.LAND", "AUTO.PRECLAND" -> Behaviour.LAND
@@ -75,7 +76,8 @@ internal object Modes {
 
     /** Why arming in mode [name] is refused, or null when the mode allows arming. */
     fun armable(autopilot: Autopilot, type: VehicleType, name: String, autoOptions: Int): Boolean = when {
-        autopilot == Autopilot.PX4 -> name != "AUTO.RTL" && name != "AUTO.LAND"
+        // Orbit prevents arming too (ModeUtil/mode_requirements.cpp: mode_req_prevent_arming).
+        autopilot == Autopilot.PX4 -> name !in setOf("AUTO.RTL", "AUTO.LAND", "POSCTL.ORBIT")
         type.isMultirotor -> name !in copterNotArmable || (name == "AUTO" && autoOptions and 1 != 0)
         // ArduPlane's ModeRTL (and the QuadPlane returns and landings) refuse arming in _pre_arm_checks (ArduPlane/mode.h).
         else -> name !in planeNotArmable

@@ -99,6 +99,8 @@ internal object ParamTables {
         ParamDef("MPC_Z_VEL_MAX_DN", 1.5, REAL32, 0.5, 4.0), // m/s
         ParamDef("MPC_LAND_SPEED", 0.7, REAL32, 0.6, 4.0), // m/s
         ParamDef("MPC_ACC_HOR", 3.0, REAL32, 2.0, 15.0), // m/s²
+        ParamDef("MPC_XY_VEL_MAX", 12.0, REAL32, 0.0, 20.0), // m/s, also the orbit's speed limit
+        ParamDef("MC_ORBIT_RAD_MAX", 1000.0, REAL32, 1.0, 10000.0), // m (flight_task_orbit_params.yaml)
     )
 
     private val px4FixedWing = listOf(

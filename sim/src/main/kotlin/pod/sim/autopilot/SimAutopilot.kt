@@ -23,36 +23,6 @@ import pod.sim.flight.moved
 import kotlin.math.cos
 import kotlin.math.sin
 
-/** What the vehicle is doing, whatever its mode is called. */
-internal sealed interface Activity {
-    /** On the ground. */
-    data object Parked : Activity
-
-    /** Climbing to [altitude] (AMSL), then switching to mode [then] (or holding where it is). */
-    data class Takeoff(val altitude: Double, val then: String?) : Activity
-
-    /** Holding at [center]: hover, or circle at [radius]. */
-    data class Hold(val center: Location, val radius: Double, val clockwise: Boolean = true) : Activity
-
-    /** Flying to [target] at [speed] m/s (null: cruise), then holding there. */
-    data class GoTo(val target: Location, val speed: Double?) : Activity
-
-    /** Returning to launch. */
-    data class Returning(val plan: ReturnPlan) : Activity
-
-    /** Landing (over [at] when given). */
-    data class Landing(val at: Location?) : Activity
-
-    /** Flying the mission. */
-    data object Mission : Activity
-
-    /** Flying straight on [heading] at [altitude]. */
-    data class Cruise(val heading: Double, val altitude: Double) : Activity
-
-    /** Descending at [rate] m/s (over [over], or wherever it stops) until it touches down; then parked. */
-    data class Descending(val over: Location?, val rate: Double) : Activity
-}
-
 /**
  * The simulated autopilot: modes, arming, commands, missions, parameters and the physics, as a
  * pure state machine. [step] advances simulated time by a fixed step; commands and messages go in
@@ -88,6 +58,13 @@ internal class SimAutopilot(
     var armed = false; private set
     var modeName: String = if (isPx4) "AUTO.LOITER" else if (multirotor) "STABILIZE" else "MANUAL"; private set
     var activity: Activity = Activity.Parked; internal set
+
+    /**
+     * ArduPlane GUIDED's loiter radius from a DO_REPOSITION's param3, m (0: WP_LOITER_RAD). It
+     * lasts while the plane stays in GUIDED: ModeGuided::_enter sets active_radius_m to 0, and
+     * ModeGuided::set_radius_and_direction is the only other writer (ArduPlane/mode_guided.cpp).
+     */
+    var guidedRadius = 0.0
 
     /** Speed overrides from DO_CHANGE_SPEED (m/s), null = the parameter's value. */
     var cruiseOverride: Double? = null
@@ -214,7 +191,12 @@ internal class SimAutopilot(
         Activity.Parked -> Guidance.Idle
         is Activity.Takeoff -> if (armed) Guidance.Climb(a.altitude) else Guidance.Idle
         is Activity.Hold -> Guidance.Loiter(a.center, a.radius, a.clockwise)
-        is Activity.GoTo -> if (multirotor) Guidance.GoTo(a.target, a.speed) else Guidance.Loiter(a.target, loiterRadius().first, loiterRadius().second)
+        is Activity.GoTo -> when {
+            multirotor -> Guidance.GoTo(a.target, a.speed)
+            a.radius > 0 -> Guidance.Loiter(a.target, a.radius, a.clockwise)
+            else -> Guidance.Loiter(a.target, loiterRadius().first, loiterRadius().second)
+        }
+        is Activity.Orbit -> Guidance.Loiter(a.center, a.radius, a.clockwise, a.speed)
         is Activity.Returning -> a.plan.guidance(body)
         is Activity.Landing -> Guidance.Land(a.at)
         Activity.Mission -> mission.guidance()
@@ -297,6 +279,8 @@ internal class SimAutopilot(
 
     /** Switches to mode [name] and starts what it does (the caller checked that it may). */
     fun setMode(name: String) {
+        // Selecting the mode it is in enters nothing (ArduPlane Plane::set_mode returns at once).
+        if (name != modeName) guidedRadius = 0.0
         modeName = name
         enterMode(name)
     }

@@ -17,10 +17,11 @@ internal sealed interface Guidance {
     data class GoTo(val target: Location, val speed: Double? = null) : Guidance
 
     /**
-     * Stay at [center]: a multirotor hovers on it (or flies a circle when [radius] > 0), a plane
-     * circles it at [radius] (at least its own loiter radius).
+     * Stay at [center]: a multirotor hovers on it (or flies a circle when [radius] > 0, at [speed]
+     * m/s along it when given, else at its circle rate), a plane circles it at [radius] (at least
+     * the tightest circle it can turn).
      */
-    data class Loiter(val center: Location, val radius: Double, val clockwise: Boolean = true) : Guidance
+    data class Loiter(val center: Location, val radius: Double, val clockwise: Boolean = true, val speed: Double? = null) : Guidance
 
     /** Land: a multirotor descends (flying over [at] first when given), a plane glides down to [at]. */
     data class Land(val at: Location?) : Guidance

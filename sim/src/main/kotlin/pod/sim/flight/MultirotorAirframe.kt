@@ -124,14 +124,19 @@ internal object MultirotorAirframe : Airframe {
         if (d < 0.5) return approach(body, northEast(body.location, moved(g.center, g.radius, 0.0, 0.0)), perf.cruise, perf)
         val theta = atan2(e, n)
         val sign = if (g.clockwise) 1.0 else -1.0
-        val tangential = min(perf.cruise, g.radius * Math.toRadians(perf.circleRate))
+        // A commanded circle speed (PX4's orbit, already limited by the autopilot) may exceed the
+        // cruise speed; the approach to the circle stays at cruise speed. Otherwise ArduCopter's
+        // circle: the circle rate, at most the waypoint speed and √(½·accel·r), which keeps half
+        // the acceleration for turning (libraries/AC_WPNav/AC_Circle.cpp, calc_velocities).
+        val tangential = g.speed ?: minOf(perf.cruise, g.radius * Math.toRadians(perf.circleRate), sqrt(0.5 * perf.acceleration * g.radius))
+        val limit = maxOf(perf.cruise, tangential)
         val radial = (-(d - g.radius) * 0.5).coerceIn(-perf.cruise, perf.cruise)
         var vN = cos(theta) * radial + cos(theta + sign * Math.PI / 2) * tangential
         var vE = sin(theta) * radial + sin(theta + sign * Math.PI / 2) * tangential
         val v = hypot(vN, vE)
-        if (v > perf.cruise) {
-            vN *= perf.cruise / v
-            vE *= perf.cruise / v
+        if (v > limit) {
+            vN *= limit / v
+            vE *= limit / v
         }
         return vN to vE
     }
