@@ -16,7 +16,7 @@ import pod.core.units.m
 import pod.dsl.action
 import pod.dsl.concurrently
 import pod.dsl.during
-import pod.dsl.mission.mission
+import pod.dsl.mission
 import pod.dsl.on
 import pod.dsl.pick
 import pod.dsl.queue.circle
@@ -33,7 +33,7 @@ class QueueProgramSpec : StringSpec({
         virtualRun {
             val (result, record) = simulate(listOf(SimFlavor.ARDUCOPTER)) {
                 val v = pick { count(1) }[0]
-                execute(mission("up") { takeOff(25.m) } on v)
+                execute(mission("up") { home(v.home.value!!); takeOff(25.m) } on v)
                 val queue = missionQueue()
                 val ended = mutableListOf<EndReason>()
                 coroutineScope {
@@ -64,7 +64,7 @@ class QueueProgramSpec : StringSpec({
         virtualRun {
             val (_, record) = simulate(listOf(SimFlavor.ARDUCOPTER)) {
                 val v = pick { count(1) }[0]
-                execute(mission("up") { takeOff(20.m) } on v)
+                execute(mission("up") { home(v.home.value!!); takeOff(20.m) } on v)
                 val queue = missionQueue()
                 queue.append(circle(at(0.m, 30.m), 15.m)) // never ends by itself
                 execute((queue on v) during 2.minutes)

@@ -50,7 +50,7 @@ public class QueueFlight(
     private val queue: MissionQueue,
     private val config: QueueFlightConfig = QueueFlightConfig(),
 ) {
-    private val steering = GuidedSteering(vehicle)
+    private val steering = GuidedSteering(vehicle, config.circleSpeed)
 
     /** Flies the queue until it runs empty (see [WhenEmpty]) or the caller is cancelled. */
     public suspend fun fly(whenEmpty: WhenEmpty = WhenEmpty.COMPLETE) {
@@ -88,7 +88,7 @@ public class QueueFlight(
         fun at(point: pod.core.queue.QueuePoint) = absolute(point.resolve(home, height), home)
         when (val pattern = entry.element.pattern) {
             is QueuePattern.Goto -> through(listOf(at(pattern.point)), arrival)
-            is QueuePattern.Segment -> through(listOf(at(pattern.from), at(pattern.to)), arrival)
+            is QueuePattern.Segment -> through(listOfNotNull(leadIn(at(pattern.from), at(pattern.to)), at(pattern.from), at(pattern.to)), arrival)
             is QueuePattern.Path -> through(pattern.points.map(::at), arrival)
             is QueuePattern.Survey -> {
                 val start = pattern.start.resolve(home, height)
@@ -115,9 +115,48 @@ public class QueueFlight(
         queue.arrived(entry.id)
     }
 
-    /** Flies through [points] in order, each one reached before the next is commanded. */
+    /**
+     * Flies through [points] in order, each one reached before the next is commanded: a multirotor
+     * straight at each (it stops on every point, so it flies the legs); a plane along each leg.
+     */
     private suspend fun through(points: List<Location>, arrival: Distance) {
-        for (point in points) steadily(point) { awaitNear(point, arrival, ignoreAltitude = steering.isPlane) }
+        var legStart = vehicle.telemetry.position.value?.location ?: points.first()
+        for (point in points) {
+            if (steering.isPlane) alongLeg(legStart.copy(altitude = point.altitude), point, arrival) else steadily(point) { awaitNear(point, arrival, ignoreAltitude = false) }
+            legStart = point
+        }
+    }
+
+    /**
+     * For a plane, a point three loiter radii before [from] on the line from [to] through it: the
+     * plane lines up there, so it flies the segment from its start instead of turning onto it
+     * halfway (it cannot turn on the spot); null for a multirotor, which stops at [from].
+     */
+    private fun leadIn(from: Location, to: Location): Location? {
+        if (!steering.isPlane) return null
+        val (n, e) = to.northEastTo(from)
+        val length = kotlin.math.hypot(n.meters, e.meters)
+        if (length < 1.0) return null
+        val extra = loiterRadius().meters * 3
+        return from.offset((n.meters / length * extra).m, (e.meters / length * extra).m)
+    }
+
+    private fun loiterRadius(): Distance = steering.planeLoiterRadius ?: QueueFlightConfig.PLANE_LOITER_GUESS
+
+    /**
+     * Flies a plane along the leg [from]–[to] until it is within [arrival] of [to], by a target on
+     * the leg more than three loiter radii ahead: that far, an ArduPlane flies straight at a guided
+     * point from where it is (Plane::update_loiter's crosstrack branch) instead of turning onto the
+     * circle around it, so moving the target along the leg keeps the plane on it.
+     */
+    private suspend fun alongLeg(from: Location, to: Location, arrival: Distance) {
+        val lookahead = loiterRadius() * 3.5
+        while (true) {
+            val here = vehicle.telemetry.position.value?.location ?: from
+            if (here.copy(altitude = to.altitude).distanceTo(to).meters <= arrival.meters) return
+            accepted { steering.goTo(Carrots.onLine(from, to, here, lookahead)) }
+            delay(config.circleStep)
+        }
     }
 
     /** Commands [target], then runs [until], sending the target again every refresh period. */
@@ -143,8 +182,8 @@ public class QueueFlight(
         }
         while (true) {
             val here = vehicle.telemetry.position.value?.location ?: center
-            val lead = CircleCarrot.lead(radius, config.circleSpeed, config.circleStep.inWholeMilliseconds / 1000.0 * 3)
-            accepted { steering.goTo(CircleCarrot.target(center, radius, here, lead).copy(altitude = center.altitude)) }
+            val lead = Carrots.lead(radius, config.circleSpeed, config.circleStep.inWholeMilliseconds / 1000.0 * 3)
+            accepted { steering.goTo(Carrots.onCircle(center, radius, here, lead).copy(altitude = center.altitude)) }
             delay(config.circleStep)
         }
     }
@@ -201,6 +240,7 @@ public class QueueFlight(
         } catch (e: pod.core.PodException) {
             null
         }
+        steering.planeLoiterRadius = loiter?.takeIf { it > 1 }?.m
         return ((loiter ?: QueueFlightConfig.PLANE_LOITER_GUESS.meters) + QueueFlightConfig.PLANE_ARRIVAL_MARGIN.meters).m
     }
 }

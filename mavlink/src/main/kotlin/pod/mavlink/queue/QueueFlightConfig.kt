@@ -23,7 +23,7 @@ public data class QueueFlightConfig(
     val refresh: Duration = 3.seconds,
     /** How often an ArduCopter's ground-flown circle moves its target. */
     val circleStep: Duration = 500.milliseconds,
-    /** The speed, m/s, the ground-flown circle's target leads the vehicle for. */
+    /** The speed, m/s, to circle at where the autopilot takes one (PX4's orbit), and that the ground-flown circle's target leads. */
     val circleSpeed: Double = 5.0,
     /** How often the queue's status refreshes its remaining time. */
     val statusPeriod: Duration = 1.seconds,

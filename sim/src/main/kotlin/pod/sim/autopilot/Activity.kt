@@ -16,8 +16,12 @@ internal sealed interface Activity {
     /**
      * Flying to [target] at [speed] m/s (null: cruise), then holding there: a multirotor hovers, a
      * plane circles it at [radius] m ([clockwise] or not; radius 0: its loiter radius and direction).
+     * An ArduPlane more than three loiter radii away flies the line from [from] (where it was when
+     * the command came) to [target] first (ArduPlane/navigation.cpp Plane::update_loiter: GUIDED
+     * with crosstrack, loiter point not reached, farther than 3 × radius → update_waypoint from
+     * prev_WP_loc, which Plane::set_guided_WP sets to the current location).
      */
-    data class GoTo(val target: Location, val speed: Double?, val radius: Double = 0.0, val clockwise: Boolean = true) : Activity
+    data class GoTo(val target: Location, val speed: Double?, val radius: Double = 0.0, val clockwise: Boolean = true, val from: Location? = null) : Activity
 
     /**
      * A multirotor orbiting [center] at [radius] m, [clockwise] or not, at [speed] m/s along the

@@ -312,7 +312,7 @@ internal class Commands(private val ap: SimAutopilot) {
             !(counterClockwise || loiterRad < 0)
         }
         val radius = ap.guidedRadius.takeIf { it > 1.0 } ?: kotlin.math.abs(loiterRad)
-        return Activity.GoTo(target, null, radius, clockwise)
+        return Activity.GoTo(target, null, radius, clockwise, from = ap.body.location)
     }
 
     private fun pauseContinue(cmd: CommandRequest): CommandResult {

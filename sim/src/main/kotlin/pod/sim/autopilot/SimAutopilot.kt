@@ -191,10 +191,13 @@ internal class SimAutopilot(
         Activity.Parked -> Guidance.Idle
         is Activity.Takeoff -> if (armed) Guidance.Climb(a.altitude) else Guidance.Idle
         is Activity.Hold -> Guidance.Loiter(a.center, a.radius, a.clockwise)
-        is Activity.GoTo -> when {
-            multirotor -> Guidance.GoTo(a.target, a.speed)
-            a.radius > 0 -> Guidance.Loiter(a.target, a.radius, a.clockwise)
-            else -> Guidance.Loiter(a.target, loiterRadius().first, loiterRadius().second)
+        is Activity.GoTo -> {
+            val (radius, clockwise) = if (a.radius > 0) a.radius to a.clockwise else loiterRadius()
+            when {
+                multirotor -> Guidance.GoTo(a.target, a.speed)
+                a.from != null && horizontalDistance(body.location, a.target) > 3 * radius -> Guidance.Track(a.from, a.target)
+                else -> Guidance.Loiter(a.target, radius, clockwise)
+            }
         }
         is Activity.Orbit -> Guidance.Loiter(a.center, a.radius, a.clockwise, a.speed)
         is Activity.Returning -> a.plan.guidance(body)

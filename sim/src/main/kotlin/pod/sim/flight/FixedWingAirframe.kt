@@ -42,6 +42,10 @@ internal object FixedWingAirframe : Airframe {
                 targetAlt = guidance.target.altitude.meters
                 guidance.speed?.let { speed = it }
             }
+            is Guidance.Track -> {
+                heading = trackCourse(body, guidance, perf)
+                targetAlt = guidance.to.altitude.meters
+            }
             is Guidance.Loiter -> {
                 heading = loiterCourse(body, guidance, perf)
                 targetAlt = guidance.center.altitude.meters
@@ -132,6 +136,24 @@ internal object FixedWingAirframe : Airframe {
             location = moved(body.location, cos(h) * speed * dt, sin(h) * speed * dt, 0.0),
             velocityNorth = cos(h) * speed, velocityEast = sin(h) * speed, velocityDown = 0.0, airspeed = speed, throttle = 0,
         )
+    }
+
+    /**
+     * The course that converges on the line [Guidance.Track.from]–[Guidance.Track.to]: towards the
+     * point on the line a couple of turn radii beyond the plane's projection onto it (as an L1
+     * controller does), straight at the end once that is nearer.
+     */
+    private fun trackCourse(body: Body, g: Guidance.Track, perf: Performance): Double {
+        val (ln, le) = northEast(g.from, g.to)
+        val length = hypot(ln, le)
+        if (length < 1.0) return bearing(body.location, g.to)
+        val (n, e) = northEast(g.from, body.location)
+        val lookahead = 2 * turnRadius(max(body.airspeed, perf.minAirspeed), perf.bankLimit)
+        val along = (n * ln + e * le) / length + lookahead
+        if (along >= length) return bearing(body.location, g.to)
+        val aimN = ln * along / length - n
+        val aimE = le * along / length - e
+        return wrap360(Math.toDegrees(kotlin.math.atan2(aimE, aimN)))
     }
 
     /**

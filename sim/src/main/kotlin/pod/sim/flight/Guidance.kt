@@ -17,6 +17,12 @@ internal sealed interface Guidance {
     data class GoTo(val target: Location, val speed: Double? = null) : Guidance
 
     /**
+     * A plane flying the line from [from] to [to] (ArduPlane's crosstrack navigation towards a far
+     * guided point, see Activity.GoTo); a multirotor flies straight to [to].
+     */
+    data class Track(val from: Location, val to: Location) : Guidance
+
+    /**
      * Stay at [center]: a multirotor hovers on it (or flies a circle when [radius] > 0, at [speed]
      * m/s along it when given, else at its circle rate), a plane circles it at [radius] (at least
      * the tightest circle it can turn).

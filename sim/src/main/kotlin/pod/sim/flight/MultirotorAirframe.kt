@@ -62,6 +62,7 @@ internal object MultirotorAirframe : Airframe {
                 climbLimit = 0.0
                 target = guidance.over?.let { approach(body, northEast(body.location, it), perf.cruise, perf) } ?: (0.0 to 0.0)
             }
+            is Guidance.Track -> return step(body, Guidance.GoTo(guidance.to), perf, ground, armed, dt)
             is Guidance.Cruise, is Guidance.Glide -> Unit // a multirotor with nobody on the sticks holds position
         }
         if (body.onGround && targetAlt <= ground + 0.2) {
