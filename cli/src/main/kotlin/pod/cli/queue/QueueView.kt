@@ -40,7 +40,8 @@ internal class QueueView(private val out: Output, private val json: Boolean, pri
         val queue = vehicle.queue
         launch { queue.events.collect(::show) }
         launch {
-            var shownIds: List<Long>? = null
+            // An empty queue at the start goes without saying.
+            var shownIds: List<Long> = emptyList()
             queue.status.collect { status ->
                 val ids = listOfNotNull(status.current?.id) + status.pending.map { it.id }
                 when {

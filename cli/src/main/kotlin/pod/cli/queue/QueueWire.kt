@@ -1,7 +1,9 @@
 package pod.cli.queue
 
 import kotlinx.serialization.SerialName
+import kotlinx.serialization.ExperimentalSerializationApi
 import kotlinx.serialization.Serializable
+import kotlinx.serialization.json.JsonClassDiscriminator
 import pod.cli.json.Finite
 import pod.core.mission.SurveyDirection
 import pod.core.queue.QueueElement
@@ -18,10 +20,11 @@ import kotlin.time.Duration.Companion.milliseconds
 // The queue's values as JSON, for the control protocol and for `pod queue … --json`. Core stays
 // free of serialization: these mirror QueuePoint, QueuePattern, QueueElement, QueueEntry and
 // QueueStatus field by field, in the units the CLI prints (metres, seconds). A sealed type's kind
-// is its `type` field.
+// is its `type` field, also inside `--json` events (whose own kind is `event`).
 
 /** A point of a queued pattern: metres from home (`local`) or a latitude and longitude (`global`). */
-@Serializable
+@OptIn(ExperimentalSerializationApi::class)
+@Serializable @JsonClassDiscriminator("type")
 public sealed interface PointJson {
     /** [north] and [east] metres from the vehicle's home. */
     @Serializable @SerialName("local")
@@ -33,7 +36,8 @@ public sealed interface PointJson {
 }
 
 /** A navigation pattern; see [QueuePattern] for what each flies. */
-@Serializable
+@OptIn(ExperimentalSerializationApi::class)
+@Serializable @JsonClassDiscriminator("type")
 public sealed interface PatternJson {
     /** Go to [point]. */
     @Serializable @SerialName("goto")
