@@ -25,8 +25,15 @@ import java.nio.channels.SocketChannel
  * said at once.
  */
 internal class QueueControlServer private constructor(private val channel: ServerSocketChannel, val address: ControlAddress) : AutoCloseable {
-    /** Answers connections until cancelled; [answer] is called on IO threads, concurrently. */
-    suspend fun serve(answer: (QueueRequest) -> QueueResponse): Nothing = coroutineScope {
+    /** Answers connections until cancelled, then lets the port go; [answer] is called on IO threads, concurrently. */
+    suspend fun serve(answer: (QueueRequest) -> QueueResponse): Nothing = try {
+        accepting(answer)
+    } finally {
+        // A cancellation that comes between two accepts interrupts no blocked thread: close here.
+        channel.close()
+    }
+
+    private suspend fun accepting(answer: (QueueRequest) -> QueueResponse): Nothing = coroutineScope {
         while (true) {
             val connection = try {
                 runInterruptible(Dispatchers.IO) { channel.accept() }

@@ -14,6 +14,7 @@ import pod.core.queue.QueueStatus
 import pod.core.units.Location
 import pod.core.units.m
 import kotlin.math.floor
+import kotlin.math.roundToLong
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
 
@@ -145,7 +146,7 @@ internal fun PatternJson.toPattern(): QueuePattern = when (this) {
 internal fun ElementJson.toElement(): QueueElement {
     val duration = durationS?.let {
         require(it.isFinite()) { "duration must be a finite number of seconds, was $it" }
-        (it * 1000).toLong().milliseconds
+        (it * 1000).roundToLong().milliseconds
     }
     return QueueElement(pattern.toPattern(), duration, altM?.m)
 }
