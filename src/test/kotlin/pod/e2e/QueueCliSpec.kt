@@ -6,6 +6,7 @@ import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.doubles.plusOrMinus
 import io.kotest.matchers.ints.shouldBeGreaterThan
 import io.kotest.matchers.collections.shouldBeEmpty
+import io.kotest.matchers.collections.shouldContain
 import io.kotest.matchers.doubles.shouldBeGreaterThan
 import io.kotest.matchers.doubles.shouldBeLessThan
 import io.kotest.matchers.doubles.shouldBeLessThanOrEqual
@@ -14,13 +15,10 @@ import io.kotest.matchers.nulls.shouldNotBeNull
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import io.kotest.matchers.types.shouldBeInstanceOf
-import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.first
-import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeout
 import pod.cli.Pod
-import pod.cli.run as runPod
 import pod.cli.json.Event
 import pod.cli.queue.PatternJson
 import pod.cli.queue.PointJson
@@ -41,13 +39,6 @@ import kotlin.time.Duration.Companion.seconds
  * commands over its loopback endpoint; every command runs in this JVM, on real loopback sockets.
  */
 class QueueCliSpec : StringSpec({
-
-    /** `pod … ARGS`: its exit code and what it printed on stdout and stderr. */
-    fun pod(vararg args: String): Triple<Int, Captured, Captured> {
-        val out = Captured()
-        val err = Captured()
-        return Triple(runPod(args.toList(), out, err), out, err)
-    }
 
     "serve takes off and flies what append, prepend, next, replace-all and clear send; the copter ends holding in the air" {
         coroutineScope {
@@ -81,9 +72,9 @@ class QueueCliSpec : StringSpec({
 
                 /** A client command's one JSON line. */
                 suspend fun queue(vararg args: String): Event {
-                    val (code, out, err) = withContext(Dispatchers.IO) { pod("queue", *args, "--control", control, "--json") }
-                    withClue(err.lines) { code shouldBe 0 }
-                    return out.events.single()
+                    val ran = pod("queue", *args, "--control", control, "--json")
+                    withClue(ran.text) { ran.code shouldBe 0 }
+                    return decodeEvent(ran.out.single())
                 }
 
                 val serving = awaitServed(Event.QueueServing::class.java, 90.seconds)
@@ -184,23 +175,23 @@ class QueueCliSpec : StringSpec({
             try {
                 sim.start(this)
                 val control = "127.0.0.1:${freeTcpPort()}"
-                val serve = startPod(listOf("queue", "serve", "--connect", "udpin:127.0.0.1:$port", "--sysid", "62", "--control", control, "--takeoff", "15", "--json"))
-                serve.awaitOut(90.seconds) { "\"queue_serving\"" in it }
+                // For people this time (its output is a pipe: plain lines).
+                val serve = startPod(listOf("queue", "serve", "--connect", "udpin:127.0.0.1:$port", "--sysid", "62", "--control", control, "--takeoff", "15"))
+                serve.awaitOut(90.seconds) { it.startsWith("vehicle 62: flying its queue (GUIDED, armed") }
                 // A far goto: the copter is on its way when the signal comes.
-                withContext(Dispatchers.IO) { pod("queue", "append", "goto", "--north", "500", "--east", "0", "--control", control) }.first shouldBe 0
+                pod("queue", "append", "goto", "--north", "500", "--east", "0", "--control", control).code shouldBe 0
+                serve.awaitOut(10.seconds) { it == "vehicle 62: flying #1 goto (500 N, 0 E)" }
                 withTimeout(30.seconds) { sim.state.first { it.groundSpeed > 3.0 } }
                 serve.signal("TERM")
                 serve.exitCode(30.seconds) shouldBe 130
-                val interrupted = serve.out.value.map(::decodeEvent).filterIsInstance<Event.Interrupted>().single()
-                interrupted.signal shouldBe "SIGTERM"
-                interrupted.safe shouldBe true
-                interrupted.mode shouldBe "BRAKE"
+                serve.out.value shouldContain "interrupted by SIGTERM: vehicle 62 holding in BRAKE (mode BRAKE, armed)"
+                serve.err.value.joinToString("\n") shouldContain "pod: SIGTERM: stopping"
                 val still = withTimeout(30.seconds) { sim.state.first { it.groundSpeed < 0.3 && abs(it.climbRate) < 0.3 } }
                 still.modeName shouldBe "BRAKE"
                 still.armed shouldBe true
                 still.relativeAltitude.meters shouldBeGreaterThan 12.0
                 // The endpoint went with it.
-                withContext(Dispatchers.IO) { pod("queue", "status", "--control", control) }.first shouldBe 2
+                pod("queue", "status", "--control", control).code shouldBe 2
             } finally {
                 sim.stop()
             }
@@ -222,37 +213,37 @@ class QueueCliSpec : StringSpec({
                 listOf("append", "goto", "--north", "10", "--east", "0", "--alt", "-5") to "altitude must be in (0, 10000] m above home",
                 listOf("replace", "hold", "--duration", "Infinity") to "duration must be a finite number of seconds",
             )) {
-                val (code, _, err) = pod("queue", *args.toTypedArray(), "--control", control)
-                withClue(args) {
-                    code shouldBe 2
-                    err.lines.single() shouldContain message
+                val ran = pod("queue", *args.toTypedArray(), "--control", control)
+                withClue(ran.text) {
+                    ran.code shouldBe 2
+                    ran.err.single() shouldContain message
                 }
             }
             listener.accept().shouldBeNull()
         }
-        pod("queue", "serve", "--control", "192.168.1.20:14660").let { (code, _, err) ->
-            code shouldBe 2
-            err.lines.single() shouldContain "the control endpoint must be on a loopback address"
+        pod("queue", "serve", "--control", "192.168.1.20:14660").let {
+            it.code shouldBe 2
+            it.err.single() shouldContain "the control endpoint must be on a loopback address"
         }
-        pod("queue", "next", "--control", "example.com:14660").let { (code, _, err) ->
-            code shouldBe 2
-            err.lines.single() shouldContain "must be on a loopback address"
+        pod("queue", "next", "--control", "example.com:14660").let {
+            it.code shouldBe 2
+            it.err.single() shouldContain "must be on a loopback address"
         }
     }
 
     "a client with no host listening says so and exits 2, with an error event under --json" {
-        val (code, out, err) = pod("queue", "status", "--control", "127.0.0.1:${freeTcpPort()}", "--json")
-        code shouldBe 2
-        err.lines.single() shouldContain "no `pod queue serve` answers on 127.0.0.1:"
-        out.events.single().shouldBeInstanceOf<Event.Error>().message shouldContain "start one with `pod queue serve --connect LINK`"
+        val ran = pod("queue", "status", "--control", "127.0.0.1:${freeTcpPort()}", "--json")
+        ran.code shouldBe 2
+        ran.err.single() shouldContain "no `pod queue serve` answers on 127.0.0.1:"
+        decodeEvent(ran.out.single()).shouldBeInstanceOf<Event.Error>().message shouldContain "start one with `pod queue serve --connect LINK`"
     }
 
     "serve refuses a control port already taken, with exit 2, before it looks for a vehicle" {
         ServerSocketChannel.open().use { taken ->
             taken.bind(InetSocketAddress(InetAddress.getByName("127.0.0.1"), 0))
-            val (code, _, err) = pod("queue", "serve", "--connect", "udpin:127.0.0.1:${freePort()}", "--control", "127.0.0.1:${taken.socket().localPort}", "--wait", "30s")
-            code shouldBe 2
-            err.lines.single() shouldContain "the port is already in use"
+            val ran = pod("queue", "serve", "--connect", "udpin:127.0.0.1:${freePort()}", "--control", "127.0.0.1:${taken.socket().localPort}", "--wait", "30s")
+            ran.code shouldBe 2
+            ran.err.single() shouldContain "the port is already in use"
         }
     }
 })
