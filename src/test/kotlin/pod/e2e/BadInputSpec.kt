@@ -132,16 +132,29 @@ class BadInputSpec : StringSpec({
         case("99999", "resume", "--connect", "udpin:127.0.0.1:99999"),
         case("-1", "start", "--from", "-1", *link()),
         case("x", "start", "--from", "x", *link()),
+        case("10.0.0.1:14660", "queue", "serve", "--control", "10.0.0.1:14660", *link()),
+        case("-3", "queue", "serve", "--takeoff", "-3", *link()),
+        case("--radius", "queue", "append", "circle", "--north", "0", "--east", "0"),
+        case("was 0", "queue", "append", "circle", "--north", "0", "--east", "0", "--radius", "0"),
+        case("1,2,3", "queue", "prepend", "segment", "--from", "1,2,3", "--to", "0,0"),
+        case("abc", "queue", "replace", "goto", "--north", "abc", "--east", "0"),
+        case("a path needs at least one point", "queue", "replace-all", "path"),
+        case("--frob", "queue", "next", "--frob"),
+        case("extra", "queue", "clear", "extra"),
+        case("99999", "queue", "status", "--control", "127.0.0.1:99999"),
     )
 
     "every subcommand meets bad arguments and bad files with exit 2 and one line naming the input, before the network" {
         // `pod --help` lists every subcommand; each is exercised above.
         val listed = pod("--help").out.joinToString("\n")
-        for (name in listOf("sim", "watch", "demo", "run", "mission", "param", "arm", "disarm", "mode", "takeoff", "land", "rtl", "goto", "pause", "resume", "start")) {
+        for (name in listOf("sim", "watch", "demo", "run", "mission", "param", "arm", "disarm", "mode", "takeoff", "land", "rtl", "goto", "pause", "resume", "start", "queue")) {
             withClue("pod --help lists $name") { listed shouldContain name }
             withClue("a bad-input case runs $name") { cases.any { it.args.firstOrNull() == name } shouldBe true }
         }
-        for (sub in listOf(listOf("mission", "upload"), listOf("mission", "download"), listOf("mission", "clear"), listOf("param", "get"), listOf("param", "set"))) {
+        for (sub in listOf(listOf("mission", "upload"), listOf("mission", "download"), listOf("mission", "clear"), listOf("param", "get"), listOf("param", "set"),
+            listOf("queue", "serve"), listOf("queue", "append"), listOf("queue", "prepend"), listOf("queue", "replace"), listOf("queue", "replace-all"),
+            listOf("queue", "next"), listOf("queue", "clear"), listOf("queue", "status"),
+        )) {
             withClue("a bad-input case runs pod ${sub.joinToString(" ")}") { cases.any { it.args.take(2) == sub } shouldBe true }
         }
         for (c in cases) {
@@ -161,7 +174,7 @@ class BadInputSpec : StringSpec({
     "a port in use is exit 2 for every command that opens a link, pod run --connect included" {
         DatagramSocket(0, InetAddress.getByName("127.0.0.1")).use { taken ->
             val address = "udpin:127.0.0.1:${taken.localPort}"
-            for (args in listOf(listOf("watch", "--connect", address), listOf("arm", "--connect", address), listOf("run", script, "--connect", address))) {
+            for (args in listOf(listOf("watch", "--connect", address), listOf("arm", "--connect", address), listOf("run", script, "--connect", address), listOf("queue", "serve", "--connect", address, "--control", "127.0.0.1:0"))) {
                 val ran = pod(*args.toTypedArray())
                 withClue("pod ${args.joinToString(" ")} printed:\n${ran.text}") {
                     ran.code shouldBe 2

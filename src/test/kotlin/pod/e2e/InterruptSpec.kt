@@ -7,12 +7,8 @@ import io.kotest.matchers.doubles.shouldBeLessThan
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import kotlinx.coroutines.CoroutineScope
-import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.coroutineScope
-import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.first
-import kotlinx.coroutines.launch
-import kotlinx.coroutines.runInterruptible
 import kotlinx.coroutines.withTimeout
 import pod.core.vehicle.Autopilot
 import pod.mavlink.mission.WplFile
@@ -37,34 +33,7 @@ class InterruptSpec : StringSpec({
     val cache = Files.createTempDirectory("pod-interrupt-cache").toFile()
     afterSpec { cache.deleteRecursively() }
 
-    /** A running `pod` process; its output lines as they come. */
-    class Child(val process: Process, scope: CoroutineScope) {
-        val out = MutableStateFlow<List<String>>(emptyList())
-        val err = MutableStateFlow<List<String>>(emptyList())
-
-        init {
-            for ((stream, lines) in listOf(process.inputStream to out, process.errorStream to err)) {
-                scope.launch(Dispatchers.IO) { stream.bufferedReader().forEachLine { line -> lines.value += line } }
-            }
-        }
-
-        suspend fun awaitOut(timeout: Duration, what: (String) -> Boolean): String = withTimeout(timeout) { out.first { it.any(what) }.first(what) }
-
-        fun signal(name: String) {
-            check(ProcessBuilder("kill", "-$name", process.pid().toString()).start().waitFor() == 0) { "kill -$name failed" }
-        }
-
-        suspend fun exitCode(timeout: Duration): Int = withTimeout(timeout) { runInterruptible(Dispatchers.IO) { process.waitFor() } }
-    }
-
-    fun CoroutineScope.pod(vararg args: String): Child {
-        val java = File(System.getProperty("java.home"), "bin/java").path
-        val process = ProcessBuilder(
-            listOf(java, "-XX:+UseSerialGC", "-XX:TieredStopAtLevel=1", "-cp", System.getProperty("java.class.path"), "pod.cli.MainKt") + args,
-        ).also { it.environment()["POD_SCRIPT_CACHE"] = cache.path }.start()
-        process.outputStream.close()
-        return Child(process, this)
-    }
+    fun CoroutineScope.pod(vararg args: String): PodProcess = startPod(args.toList(), mapOf("POD_SCRIPT_CACHE" to cache.path))
 
     fun script(name: String): String = File(InterruptSpec::class.java.getResource("/scripts/$name")!!.toURI()).path
 

@@ -40,9 +40,7 @@ internal abstract class ActionCommand(out: Output, name: String, private val sum
     override suspend fun afterInterrupt(vehicle: MavlinkVehicle): String {
         val t = vehicle.telemetry
         if (safeAsItIs) return "left ${t.mode.value?.name ?: "as it was"}"
-        if (!t.armed.value) return "is disarmed"
-        vehicle.action.hold()
-        return "holding in ${t.mode.value?.name}"
+        return holdIfArmed(vehicle)
     }
 
     /** What to add when the action needs the vehicle armed and it is not: another way than `pod arm`, if the command has one. */

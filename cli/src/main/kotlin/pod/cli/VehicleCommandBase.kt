@@ -62,6 +62,17 @@ internal abstract class VehicleCommandBase(protected val out: Output, name: Stri
      */
     protected open suspend fun afterInterrupt(vehicle: MavlinkVehicle): String = "left as it was"
 
+    /**
+     * For [afterInterrupt] of commands that fly: an armed [vehicle] holds where it is
+     * ([MavlinkVehicle.action]`.hold()`: a mode that keeps its height with nobody on the sticks).
+     */
+    protected suspend fun holdIfArmed(vehicle: MavlinkVehicle): String {
+        val t = vehicle.telemetry
+        if (!t.armed.value) return "is disarmed"
+        vehicle.action.hold()
+        return "holding in ${t.mode.value?.name}"
+    }
+
     override fun run() = runBlocking {
         prepare()
         val gcs = reportingLinkErrors { GroundStation.open(connect, this) }

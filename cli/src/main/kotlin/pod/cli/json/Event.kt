@@ -2,6 +2,7 @@ package pod.cli.json
 
 import kotlinx.serialization.SerialName
 import kotlinx.serialization.Serializable
+import pod.cli.queue.EntryJson
 
 /**
  * One line of `pod … --json` output: a JSON object whose `event` field names the kind. Every
@@ -17,7 +18,10 @@ public sealed interface Event {
 
     // ---- pod watch, pod demo: the fleet on a link ----
 
-    /** `pod watch` opened its link: [address] as given, [port] the local UDP or TCP port. */
+    /**
+     * `pod watch` opened its link: [address] as given, [port] the local UDP or TCP port. `pod queue
+     * serve` opened its control endpoint: [address] is HOST:PORT, [port] the port it got.
+     */
     @Serializable @SerialName("listening")
     public data class Listening(val address: String, val port: Int) : Event
 
@@ -143,6 +147,69 @@ public sealed interface Event {
         val armed: Boolean? = null,
         @SerialName("relative_alt_m") val relativeAltM: Finite? = null,
         val map: String? = null,
+    ) : Event
+
+    // ---- pod queue: a vehicle's mission queue; entries and statuses as pod.cli.queue's JSON ----
+
+    /**
+     * `pod queue serve` flies vehicle [sysid]'s queue from now on (after `--takeoff`, if asked) and
+     * takes `pod queue` requests on [control] (HOST:PORT); [mode] and [relativeAltM] as the flight begins.
+     */
+    @Serializable @SerialName("queue_serving")
+    public data class QueueServing(
+        val sysid: Int,
+        val control: String,
+        val mode: String?,
+        @SerialName("relative_alt_m") val relativeAltM: Finite?,
+    ) : Event
+
+    /** [entry] of vehicle [sysid]'s queue became current; [atS] is the queue's time in seconds. */
+    @Serializable @SerialName("queue_started")
+    public data class QueueStarted(@SerialName("at_s") val atS: Double, val sysid: Int, val entry: EntryJson) : Event
+
+    /**
+     * [entry] stopped being current, for [reason]: `arrived`, `elapsed` (its duration ran out),
+     * `skipped` (`next`), `preempted` (a prepend; it is pending again), `replaced` or `cleared`.
+     */
+    @Serializable @SerialName("queue_ended")
+    public data class QueueEnded(@SerialName("at_s") val atS: Double, val sysid: Int, val entry: EntryJson, val reason: String) : Event
+
+    /** Vehicle [sysid]'s queue ran empty: the vehicle holds where it is, at its height. */
+    @Serializable @SerialName("queue_emptied")
+    public data class QueueEmptied(@SerialName("at_s") val atS: Double, val sysid: Int) : Event
+
+    /**
+     * Vehicle [sysid]'s queue: the [current] entry (null when empty), what is left of its duration
+     * ([remainingS], null when unlimited) and the [pending] entries in order; with the vehicle's
+     * [mode], [armed] and height above home. `pod queue status --json` prints one; `pod queue
+     * serve --json` one whenever it changes (the remaining time about once a second).
+     */
+    @Serializable @SerialName("queue_status")
+    public data class QueueStatus(
+        val sysid: Int,
+        val mode: String?,
+        val armed: Boolean?,
+        @SerialName("relative_alt_m") val relativeAltM: Finite?,
+        val current: EntryJson?,
+        @SerialName("remaining_s") val remainingS: Finite?,
+        val pending: List<EntryJson>,
+    ) : Event
+
+    /**
+     * A `pod queue` request was done; the last line. [action] is `append`, `prepend`, `replace`,
+     * `replace-all`, `next` or `clear`; [entry] the entry an insertion made (its id names it in
+     * the status), [ended] the entry `next` ended (null when the queue was empty); then the queue
+     * after the request, as in [QueueStatus].
+     */
+    @Serializable @SerialName("queue_done")
+    public data class QueueDone(
+        val action: String,
+        val sysid: Int,
+        val entry: EntryJson?,
+        val ended: EntryJson?,
+        val current: EntryJson?,
+        @SerialName("remaining_s") val remainingS: Finite?,
+        val pending: List<EntryJson>,
     ) : Event
 
     // ---- pod demo: the program's events; [at] is vehicle time in seconds since it started ----

@@ -13,8 +13,15 @@ import kotlinx.serialization.json.jsonObject
 import kotlinx.serialization.json.jsonPrimitive
 import pod.core.engine.EngineEvent
 import pod.core.platform.MissionEvent
+import pod.cli.queue.ElementJson
+import pod.cli.queue.EntryJson
+import pod.cli.queue.PatternJson
+import pod.cli.queue.PointJson
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
+
+private val circleEntry = EntryJson(2, ElementJson(PatternJson.Circle(PointJson.Local(300.0, 0.0), -30.0), durationS = 30.0, altM = 25.0))
+private val gotoEntry = EntryJson(1, ElementJson(PatternJson.Goto(PointJson.Global(41.2, -8.6))))
 
 /** One event of every kind `pod … --json` prints, with every field set where it can be. */
 private val samples: List<Event> = listOf(
@@ -33,6 +40,12 @@ private val samples: List<Event> = listOf(
     Event.Done("param-get", 7, "STABILIZE", false, 0.0, items = null, name = "WPNAV_SPEED", value = 500.0, type = "REAL32"),
     Event.Error("vehicle 7 refused: MAV_CMD_COMPONENT_ARM_DISARM was DENIED"),
     Event.Interrupted("SIGINT", 7, safe = true, state = "holding in BRAKE", mode = "BRAKE", armed = true, relativeAltM = 11.9),
+    Event.QueueServing(61, "127.0.0.1:14660", "GUIDED", 20.1),
+    Event.QueueStarted(12.5, 61, circleEntry),
+    Event.QueueEnded(42.5, 61, circleEntry, "elapsed"),
+    Event.QueueEmptied(42.5, 61),
+    Event.QueueStatus(61, "GUIDED", true, 20.1, circleEntry, remainingS = 17.5, pending = listOf(gotoEntry)),
+    Event.QueueDone("prepend", 61, entry = circleEntry, ended = null, current = circleEntry, remainingS = 30.0, pending = listOf(gotoEntry)),
     Event.TaskStarted(1.5, 3, 1, "survey", listOf(1, 2)),
     Event.TaskDone(61.25, 3, "survey"),
     Event.TaskFailed(61.25, 4, "hop", "vehicle 2 lost"),
@@ -116,6 +129,11 @@ class EventJsonTest : StringSpec({
             withClue("README row for $kind") { (row != null) shouldBe true }
             for (field in fieldsOf(event)) withClue("README row for $kind names `$field`") { row!!.contains("`$field`") shouldBe true }
         }
+    }
+
+    "a queue entry's pattern and points name their kind in a type field, not the event field" {
+        EventJson.encode(Event.QueueStarted(12.5, 61, circleEntry)) shouldBe
+            """{"event":"queue_started","at_s":12.5,"sysid":61,"entry":{"id":2,"element":{"pattern":{"type":"circle","center":{"type":"local","north":300.0,"east":0.0},"radius":-30.0},"duration_s":30.0,"alt_m":25.0}}}"""
     }
 
     "a program's picked vehicles are a JSON array of system ids" {

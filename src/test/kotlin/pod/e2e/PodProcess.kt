@@ -1,0 +1,45 @@
+package pod.e2e
+
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.runInterruptible
+import kotlinx.coroutines.withTimeout
+import java.io.File
+import kotlin.time.Duration
+
+/** A running `pod` process (a JVM of its own); its output lines as they come. */
+internal class PodProcess(val process: Process, scope: CoroutineScope) {
+    val out = MutableStateFlow<List<String>>(emptyList())
+    val err = MutableStateFlow<List<String>>(emptyList())
+
+    init {
+        for ((stream, lines) in listOf(process.inputStream to out, process.errorStream to err)) {
+            scope.launch(Dispatchers.IO) { stream.bufferedReader().forEachLine { line -> lines.value += line } }
+        }
+    }
+
+    suspend fun awaitOut(timeout: Duration, what: (String) -> Boolean): String = withTimeout(timeout) { out.first { it.any(what) }.first(what) }
+
+    /** Sends signal [name] (INT, TERM) as `kill` does. */
+    fun signal(name: String) {
+        check(ProcessBuilder("kill", "-$name", process.pid().toString()).start().waitFor() == 0) { "kill -$name failed" }
+    }
+
+    suspend fun exitCode(timeout: Duration): Int = withTimeout(timeout) { runInterruptible(Dispatchers.IO) { process.waitFor() } }
+}
+
+/**
+ * Starts `pod ARGS` as the `./pod` launcher does: `pod.cli.MainKt` on this test's classpath, in a
+ * JVM of its own (so that signals reach it), with [environment] added.
+ */
+internal fun CoroutineScope.startPod(args: List<String>, environment: Map<String, String> = emptyMap()): PodProcess {
+    val java = File(System.getProperty("java.home"), "bin/java").path
+    val process = ProcessBuilder(
+        listOf(java, "-XX:+UseSerialGC", "-XX:TieredStopAtLevel=1", "-cp", System.getProperty("java.class.path"), "pod.cli.MainKt") + args,
+    ).also { it.environment().putAll(environment) }.start()
+    process.outputStream.close()
+    return PodProcess(process, this)
+}
