@@ -4,7 +4,9 @@ import com.github.ajalt.clikt.core.CliktError
 import com.github.ajalt.clikt.core.parse
 import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.collections.shouldContain
 import io.kotest.matchers.collections.shouldContainAll
+import io.kotest.matchers.collections.shouldContainInOrder
 import io.kotest.matchers.collections.shouldHaveSize
 import io.kotest.matchers.ints.shouldBeGreaterThan
 import io.kotest.matchers.ints.shouldBeGreaterThanOrEqual
@@ -86,22 +88,28 @@ class CliSpec : StringSpec({
         }
     }
 
-    "pod demo runs Listing 4: two drones survey, the tired pair hands over to charged ones, and a map is written" {
+    "pod demo runs Listing 4 (two drones survey, the tired pair hands over to charged ones) beside a mission queue fed as it flies, and a map is written" {
         val out = Captured()
         val map = kotlin.io.path.createTempFile("pod-demo", ".svg")
         Pod(out).parse(listOf("demo", "--json", "--for", "20m", "--time-scale", "40", "--map", map.toString()))
         val events = out.events
         val picked = events.filterIsInstance<Event.Picked>().map { it.vehicles }
-        picked shouldHaveSize 4
-        picked.flatten().sorted() shouldBe listOf(1, 2, 3, 4)
-        events.filterIsInstance<Event.Flying>().map { it.vehicle }.toSet() shouldBe setOf(1, 2, 3, 4)
+        picked shouldHaveSize 5
+        picked.flatten().sorted() shouldBe listOf(1, 2, 3, 4, 5)
+        events.filterIsInstance<Event.Flying>().map { it.vehicle }.toSet() shouldBe setOf(1, 2, 3, 4, 5)
+        val said = events.filterIsInstance<Event.Message>().map { it.text }
+        said.filter { it.startsWith("queue: ") }.map { it.substringBefore(";") } shouldContainInOrder listOf(
+            "queue: appended three gotos", "queue: prepended a counter-clockwise circle for 60 s",
+            "queue: replaced the current goto with a segment", "queue: replaced everything with a five-point path", "queue: next() skipped the rest of the path",
+        )
+        events.filterIsInstance<Event.TaskDone>().map { it.task } shouldContain "queue"
         val missions = events.filterIsInstance<Event.Mission>()
         missions.map { it.what }.toSet() shouldContainAll setOf("uploaded", "started")
         missions.filter { it.what == "uploaded" }.forEach { (it.steps ?: 0) shouldBeGreaterThan 0 }
         events.last() shouldBe Event.DemoDone(ok = true, error = null, map = map.toString())
         val svg = kotlin.io.path.Path(map.toString()).toFile().readText()
         svg shouldContain "<svg"
-        Regex("<polyline").findAll(svg).count() shouldBeGreaterThanOrEqual 8 // planned and flown, 4 vehicles
+        Regex("<polyline").findAll(svg).count() shouldBeGreaterThanOrEqual 10 // planned and flown, 5 vehicles
     }
 
     "pod sim --json announces each vehicle it started with a started event" {

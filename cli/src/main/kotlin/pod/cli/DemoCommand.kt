@@ -18,7 +18,10 @@ import pod.cli.json.EventJson
 import pod.cli.json.toEvent
 import pod.launch.Interruption
 import pod.launch.Interrupted
+import pod.dsl.action
+import pod.dsl.and
 import pod.samples.listing4
+import pod.samples.queueTour
 import pod.launch.simulate
 import pod.sim.SimFlavor
 import kotlin.io.path.Path
@@ -28,12 +31,13 @@ import kotlin.time.Duration.Companion.seconds
 
 /**
  * `pod demo`: the Dolphin report's Listing 4 on simulated drones at an accelerated time scale —
- * two vehicles kept on survey, each replaced by a charged one when its battery runs low — printing
+ * two vehicles kept on survey, each replaced by a charged one when its battery runs low — and,
+ * beside it on one more drone, a mission queue fed while it flies ([queueTour]), printing
  * every task and vehicle event as it happens under a live fleet table, then an SVG map of the
  * planned missions and the flown tracks.
  */
 internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo") {
-    private val count by option("--vehicles", help = "how many simulated drones").int().restrictTo(2..20).default(4)
+    private val count by option("--vehicles", help = "how many simulated drones").int().restrictTo(3..20).default(5)
     private val timeScale by option("--time-scale", help = "how much faster than real time the vehicles live").double().restrictTo(1.0..200.0).default(40.0)
     private val length by option("--for", help = "how long the fleet keeps two drones on survey, in vehicle time (e.g. 30m)")
         .convert { text -> Duration.parseOrNull(text)?.takeIf { it.isPositive() } ?: fail(NOT_A_DURATION.format(text)) }
@@ -42,7 +46,7 @@ internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo"
     private val json by option("--json", help = "JSON lines instead of text").flag()
 
     override fun help(context: Context): String =
-        "Dolphin's Listing 4 on simulated drones: two kept on survey, each replaced by a charged one when its battery runs low."
+        "Dolphin's Listing 4 on simulated drones (two kept on survey, each replaced by a charged one when its battery runs low), and a mission queue fed while one more flies it."
 
     override fun run() = runBlocking {
         // The map is written at the end: a path that cannot take it fails now, not after the flight.
@@ -58,9 +62,9 @@ internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo"
                 map = map,
             ) { sim ->
                 val shown = launch { view.show(sim.station) }
-                view.note("$count simulated drones at ${timeScale}x; keeping 2 on survey for $length of vehicle time")
+                view.note("$count simulated drones at ${timeScale}x; keeping 2 on survey for $length of vehicle time, and one flying a mission queue")
                 try {
-                    Interruption.cancellable { listing4(duration = length) }
+                    Interruption.cancellable { execute(action("queue tour") { queueTour() } and action("listing 4") { listing4(duration = length) }) }
                 } finally {
                     shown.cancel()
                     view.finish(sim.station)

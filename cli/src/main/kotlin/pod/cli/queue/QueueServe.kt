@@ -131,9 +131,7 @@ internal class QueueServe(out: Output) : VehicleCommandBase(out, "serve") {
                 }
                 entry = queue.insert(request.mode.mode, element).toJson()
             }
-            // The element current just before: next() ends whatever is current when it runs, and only
-            // this host's requests and the flight change the queue, so that is it but for an arrival in between.
-            QueueRequest.Next -> ended = queue.status.value.current?.takeIf { queue.next() }?.toJson()
+            QueueRequest.Next -> ended = queue.next()?.toJson()
             QueueRequest.Clear -> queue.clear()
             QueueRequest.Status -> Unit
         }

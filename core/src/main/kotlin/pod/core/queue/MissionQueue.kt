@@ -81,11 +81,11 @@ public class MissionQueue(
         return entry!!
     }
 
-    /** Ends the current element now (Paparazzi's NEXT_MISSION); false when the queue was empty. */
-    public fun next(): Boolean {
-        var had = false
-        change(EndReason.SKIPPED) { state, now -> had = state.current != null; state.advance(now) }
-        return had
+    /** Ends the current element now (Paparazzi's NEXT_MISSION) and returns it, or null when the queue was empty. */
+    public fun next(): QueueEntry? {
+        var ended: QueueEntry? = null
+        change(EndReason.SKIPPED) { state, now -> ended = state.current; state.advance(now) }
+        return ended
     }
 
     /** Empties the queue; the vehicle flying it holds where it is. */

@@ -36,8 +36,8 @@ class MissionQueueTest : StringSpec({
             queue.state.value.current shouldBe a
             val path = queue.replaceAll(QueueElement(QueuePattern.Path(List(5) { at((it * 10).m, 0.m) })))
             queue.state.value.entries shouldBe listOf(path)
-            queue.next() shouldBe true
-            queue.next() shouldBe false
+            queue.next() shouldBe path
+            queue.next() shouldBe null
             runCurrent()
             collecting.cancel()
             events.map { it.describe() } shouldBe listOf(

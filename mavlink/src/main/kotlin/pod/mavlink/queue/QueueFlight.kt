@@ -78,7 +78,7 @@ public class QueueFlight(
             queue.expire()
             val now = queue.now()
             val untilDeadline = queue.state.value.deadline?.let { it - now }
-            val wait = listOfNotNull(untilDeadline?.div(queue.timeScale), config.statusPeriod).min()
+            val wait = listOfNotNull(untilDeadline?.div(queue.timeScale), config.statusPeriod).min()  // the status period is wall time
             delay(wait.coerceAtLeast(Duration.ZERO))
         }
     }
@@ -155,7 +155,7 @@ public class QueueFlight(
             val here = vehicle.telemetry.position.value?.location ?: from
             if (here.copy(altitude = to.altitude).distanceTo(to).meters <= arrival.meters) return
             accepted { steering.goTo(Carrots.onLine(from, to, here, lookahead)) }
-            delay(config.circleStep)
+            pause(config.circleStep)
         }
     }
 
@@ -164,7 +164,7 @@ public class QueueFlight(
         accepted { steering.goTo(target) }
         val refresh = launch {
             while (true) {
-                delay(config.refresh)
+                pause(config.refresh)
                 accepted { steering.goTo(target) }
             }
         }
@@ -176,7 +176,7 @@ public class QueueFlight(
         if (!steering.circlesFromGround) {
             accepted { steering.circle(center, radius) }
             while (true) {
-                delay(config.refresh)
+                pause(config.refresh)
                 accepted { steering.circle(center, radius) }
             }
         }
@@ -184,7 +184,7 @@ public class QueueFlight(
             val here = vehicle.telemetry.position.value?.location ?: center
             val lead = Carrots.lead(radius, config.circleSpeed, config.circleStep.inWholeMilliseconds / 1000.0 * 3)
             accepted { steering.goTo(Carrots.onCircle(center, radius, here, lead).copy(altitude = center.altitude)) }
-            delay(config.circleStep)
+            pause(config.circleStep)
         }
     }
 
@@ -216,6 +216,9 @@ public class QueueFlight(
             horizontal <= within.meters && (ignoreAltitude || abs(p.location.altitude.meters - target.altitude.meters) <= config.altitudeTolerance.meters)
         }
     }
+
+    /** Waits [vehicleTime] of the vehicle's time (a simulator may run faster than the clock: the queue's time scale). */
+    private suspend fun pause(vehicleTime: Duration) = delay(vehicleTime / queue.timeScale)
 
     private fun airborne(): Boolean = vehicle.telemetry.let { isAirborne(it.landedState.value, it.position.value?.relativeAltitude, it.armed.value) }
 

@@ -9,7 +9,11 @@ import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.minutes
 import kotlin.time.Duration.Companion.seconds
 
-/** How a [QueueFlight] flies; the defaults suit ArduPilot and PX4 vehicles. */
+/**
+ * How a [QueueFlight] flies; the defaults suit ArduPilot and PX4 vehicles. [refresh] and
+ * [circleStep] are vehicle time (divided by the queue's time scale for a simulator running faster
+ * than the clock); [statusPeriod] is wall time, for displays.
+ */
 public data class QueueFlightConfig(
     /**
      * How close to a point counts as reaching it, or null for the airframe's own: 2 m for a
