@@ -42,7 +42,11 @@ fun main(args: Array<String>) {
                                 ChangeMethod.REUPLOAD -> rig.reuploadChanges(n, condition, o.warmUp, reps, o.gap, o.limit)
                             }
                             println("  " + QueueReport.line(runs))
-                            runs.mapNotNull { it.error }.distinct().forEach { println("    failed: $it") }
+                            runs.filter { it.error != null }.groupBy { it.error }.forEach { (error, failed) ->
+                                val ground = failed.mapNotNull { it.groundMs }
+                                val returned = if (ground.isEmpty()) "" else "; the ground's calls had returned in ${ground.size} of them, after " + ground.joinToString { "%.0f ms".format(java.util.Locale.ROOT, it) }
+                                println("    ${failed.size} failed: $error$returned")
+                            }
                             runs
                         }
                     }

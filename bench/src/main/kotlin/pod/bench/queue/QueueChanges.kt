@@ -22,6 +22,7 @@ import pod.mavlink.queue.QueueFlight
 import pod.sim.SimVehicle
 import kotlin.math.roundToLong
 import kotlin.time.Duration
+import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
 
 /** One change: how long until the vehicle side steered for the new point, and until the ground's calls returned; or why it failed. */
@@ -88,7 +89,7 @@ suspend fun QueueRig.queueChanges(size: Int, condition: LinkCondition, warmUp: I
     repeat(size) { queue.append(goto(pendingPoint(it))) }
     val flight = launch { QueueFlight(vehicle, queue).fly(WhenEmpty.WAIT) }
     try {
-        withTimeout(limit) { sim.state.first { sim.steersFor(location(newPoint(0))) } }
+        withTimeout(maxOf(limit, SET_UP_LIMIT)) { sim.state.first { sim.steersFor(location(newPoint(0))) } }
         (1..warmUp + reps).map { k ->
             val p = newPoint(k)
             val change = timeChange(ChangeMethod.QUEUE, size, condition, location(p), limit) { queue.replaceCurrent(goto(p)) }
@@ -118,7 +119,7 @@ suspend fun QueueRig.reuploadChanges(size: Int, condition: LinkCondition, warmUp
         listOf(item(0, NAV_WAYPOINT, home).copy(frame = 0, z = home.altitude.meters.toFloat()), item(1, NAV_TAKEOFF, null), item(CURRENT_ITEM, NAV_WAYPOINT, location(current))) +
             (0 until size).map { item(CURRENT_ITEM + 1 + it, NAV_WAYPOINT, location(pendingPoint(it))) }
 
-    withTimeout(limit) {
+    withTimeout(maxOf(limit, SET_UP_LIMIT)) {
         vehicle.mission.upload(mission(newPoint(0)))
         vehicle.mission.setCurrent(CURRENT_ITEM)
         vehicle.action.setMode("AUTO")
@@ -135,6 +136,9 @@ suspend fun QueueRig.reuploadChanges(size: Int, condition: LinkCondition, warmUp
         change
     }.drop(warmUp)
 }
+
+/** How long setting a case up (the first element flying, or the mission uploaded and flown in AUTO) may take. */
+private val SET_UP_LIMIT = 60.seconds
 
 private const val CURRENT_ITEM = 2
 private const val FRAME_GLOBAL_RELATIVE_ALT_INT = 6

@@ -63,6 +63,7 @@ object QueueReport {
                         put("vehicle_p90_ms", num(percentile(ok, 90.0)))
                         put("ground_median_ms", num(percentile(runs.mapNotNull { it.groundMs }, 50.0)))
                         putJsonArray("vehicle_ms") { runs.forEach { add(num(it.vehicleMs)) } }
+                        putJsonArray("ground_ms") { runs.forEach { add(num(it.groundMs)) } }
                         putJsonArray("errors") { runs.mapNotNull { it.error }.forEach { add(kotlinx.serialization.json.JsonPrimitive(it)) } }
                     }
                 }
