@@ -30,8 +30,11 @@ class RelayedVehicle private constructor(val sim: SimVehicle, val relay: LossyRe
          * Starts a relay with [loss] (0..1) each way, seeded with [seed], towards loopback port
          * [gcsPort], and a vehicle of [config] (its `gcs` replaced by the relay's address) behind it.
          */
-        suspend fun start(scope: CoroutineScope, config: SimVehicleConfig, loss: Double, seed: Long, gcsPort: Int): RelayedVehicle {
-            val faults = LinkFaults(drop = loss)
+        suspend fun start(scope: CoroutineScope, config: SimVehicleConfig, loss: Double, seed: Long, gcsPort: Int): RelayedVehicle =
+            start(scope, config, LinkFaults(drop = loss), seed, gcsPort)
+
+        /** As the other [start], with any [faults] (the same each way): a delay, loss, … */
+        suspend fun start(scope: CoroutineScope, config: SimVehicleConfig, faults: LinkFaults, seed: Long, gcsPort: Int): RelayedVehicle {
             val relay = LossyRelay("udpin://127.0.0.1:0", "udpout://127.0.0.1:$gcsPort", faults, faults, seed = seed)
             relay.start(scope)
             val sim = SimVehicle(config.copy(gcs = "udpout://127.0.0.1:${relay.portA}"))

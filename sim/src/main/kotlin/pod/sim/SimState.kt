@@ -34,6 +34,13 @@ public data class SimState(
     public val missionCurrent: Int = 0,
     /** True once the simulated GPS has a 3D fix and the estimator is ready (arming is possible). */
     public val positionReady: Boolean = true,
+    /**
+     * Where the autopilot is steering now: a guided go-to's point (DO_REPOSITION, a guided
+     * waypoint) or, in a mission, the position of the item being flown; null while it holds, takes
+     * off, lands or does anything else. Lets tests and benchmarks see a command take effect at the
+     * vehicle, not only in its telemetry.
+     */
+    public val target: Location? = null,
 ) {
     /** Height above home. */
     public val relativeAltitude: Distance get() = (location.altitude.meters - home.altitude.meters).m

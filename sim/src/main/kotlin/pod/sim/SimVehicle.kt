@@ -316,8 +316,7 @@ public class SimVehicle(
     /** Hands a mission-protocol message to the mission server and sends its replies to the asker. */
     private suspend fun serveMission(frame: MavFrame, message: MissionMessage) {
         missionServer.home = homeItem(autopilot.home)
-        val replies = missionServer.onMessage(message, clockNanos())
-        autopilot.missionChanged()
+        val replies = autopilot.onMissionMessage(message, clockNanos())
         for (reply in replies) send(MissionWire.encode(reply, frame.systemId, frame.componentId))
         missionPeer = frame.systemId to frame.componentId
         scheduleMissionTimer()

@@ -354,6 +354,8 @@ internal class Commands(private val ap: SimAutopilot) {
         val seq = cmd.param1.toInt()
         if (seq !in 0 until ap.missionServer.list(pod.mavlink.mission.MissionType.MISSION).size) return DENIED
         ap.setCurrent(seq)
+        // The same AP_Mission::set_current_cmd as MISSION_SET_CURRENT (GCS_MAVLINK::handle_command_do_set_mission_current).
+        if (!ap.isPx4 && ap.activity == Activity.Mission) ap.mission.restart()
         return ACCEPTED
     }
 

@@ -116,6 +116,21 @@ internal class MissionRunner(private val ap: SimAutopilot) {
         newItem()
     }
 
+    /** Where the item being flown points (once it has been started), or null when paused or done. */
+    val target: Location? get() = if (done || pausedAt != null) null else item.target
+
+    /**
+     * Starts the server's current item afresh, read from the list as it is now, with its target
+     * resolved at once (ArduPilot's set_current_cmd while the mission runs; see
+     * [SimAutopilot.onMissionMessage]). A finished mission stays finished.
+     */
+    fun restart() {
+        if (done) return
+        seq = ap.missionServer.current.coerceAtLeast(first)
+        newItem()
+        items.getOrNull(seq)?.takeIf { it.command in NAV }?.let { item.target = location(it) }
+    }
+
     /** AUTO was left. */
     fun stop() {
         pausedAt = null

@@ -111,7 +111,31 @@ internal class SimAutopilot(
         headingDeg = body.heading, charge = charge, armed = armed, landedState = landedState(),
         customMode = FlightModes.customMode(autopilot, type, modeName) ?: 0, modeName = modeName,
         airspeed = body.airspeed, throttle = body.throttle, missionCurrent = missionServer.current, positionReady = positionReady,
+        target = target(),
     )
+
+    private fun target(): Location? = when (val a = activity) {
+        is Activity.GoTo -> a.target
+        Activity.Mission -> mission.target
+        else -> null
+    }
+
+    /**
+     * Hands a mission-protocol message from a ground station to the mission server at [now] (the
+     * server's clock) and returns its replies, reacting to the list as it is afterwards
+     * ([missionChanged]). MISSION_SET_CURRENT while an ArduPilot vehicle flies its mission restarts
+     * the item named, even the one it is flying: AP_Mission::set_current_cmd stops the current nav
+     * command and advance_current_nav_cmd reads the item from storage again, at once, in the
+     * message handler (libraries/AP_Mission/AP_Mission.cpp); AP_Mission::replace_cmd says a
+     * rewritten active item has "no effect until the command is restarted". So an upload that
+     * rewrote the item being flown takes effect with it.
+     */
+    fun onMissionMessage(message: MissionMessage, now: Long): List<MissionMessage> {
+        val replies = missionServer.onMessage(message, now)
+        missionChanged()
+        if (message is MissionMessage.SetCurrent && !isPx4 && activity == Activity.Mission) mission.restart()
+        return replies
+    }
 
     private fun landedState(): LandedState = when {
         body.onGround && body.airspeed < 0.5 -> LandedState.ON_GROUND
