@@ -1,11 +1,15 @@
 package pod.mavlink.mission
 
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
+import kotlin.time.TimeMark
 import kotlinx.coroutines.CancellationException
+import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.Flow
-import kotlinx.coroutines.flow.channelFlow
-import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.flow.buffer
+import kotlinx.coroutines.flow.channelFlow
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
 import pod.core.vehicle.Autopilot
@@ -14,11 +18,11 @@ import pod.core.vehicle.VehicleType
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.MessageTargets
 import pod.mavlink.Wire
+import pod.mavlink.command.CommandRejected
+import pod.mavlink.command.CommandResult
+import pod.mavlink.command.MavCommands
+import pod.mavlink.command.VehicleCommand
 import pod.mavlink.run
-import kotlin.time.Duration
-import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.Duration.Companion.seconds
-import kotlin.time.TimeMark
 
 /**
  * Mission, fence and rally lists of one vehicle: upload, download, clear, set the current item.
@@ -162,9 +166,24 @@ public class MissionService internal constructor(
         exclusive.withLock { vehicle.run(MissionCommand.clear(type, timing), wire(type, cancellable = false)) }
     }
 
-    /** Makes item [seq] of the mission the one the vehicle flies next. */
+    /**
+     * Makes item [seq] of the mission the one the vehicle flies next (ArduPilot restarts it when it
+     * already is: AP_Mission::set_current_cmd). MISSION_SET_CURRENT is confirmed by a MISSION_CURRENT
+     * naming [seq], which cannot tell an answer from the vehicle's periodic report when [seq] is
+     * already current: a lost request would look confirmed and an item rewritten by an upload would
+     * never be restarted. So that case goes as MAV_CMD_DO_SET_MISSION_CURRENT, which the vehicle
+     * acknowledges (ArduPilot 4.3+, PX4 1.14+); a vehicle that does not know it gets MISSION_SET_CURRENT.
+     */
     public suspend fun setCurrent(seq: Int) {
         require(seq >= 0) { "seq must be ≥ 0, was $seq" }
+        if (vehicle.telemetry.missionCurrent.value == seq) {
+            try {
+                vehicle.commands.send(VehicleCommand(MavCommands.DO_SET_MISSION_CURRENT, param1 = seq.toFloat()))
+                return
+            } catch (e: CommandRejected) {
+                if (e.result != CommandResult.UNSUPPORTED) throw e
+            }
+        }
         exclusive.withLock { vehicle.run(MissionCommand.setCurrent(seq, timing), wire(MissionType.MISSION, cancellable = false)) }
     }
 
