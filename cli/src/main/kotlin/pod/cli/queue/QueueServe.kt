@@ -4,6 +4,8 @@ import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.parameters.options.convert
 import com.github.ajalt.clikt.parameters.options.default
 import com.github.ajalt.clikt.parameters.options.option
+import com.github.ajalt.clikt.parameters.types.double
+import com.github.ajalt.clikt.parameters.types.restrictTo
 import kotlinx.coroutines.cancelChildren
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.filterNotNull
@@ -14,6 +16,7 @@ import pod.cli.Output
 import pod.cli.VehicleCommandBase
 import pod.cli.badInput
 import pod.cli.json.Event
+import pod.core.queue.MissionQueue
 import pod.core.queue.QueueBusy
 import pod.core.queue.WhenEmpty
 import pod.core.units.m
@@ -53,6 +56,11 @@ internal class QueueServe(out: Output) : VehicleCommandBase(out, "serve") {
             a
         }
 
+    private val timeScale by option(
+        "--time-scale", metavar = "X",
+        help = "vehicle seconds per real second, for a simulator running faster (pod sim --speedup X): durations count in vehicle time",
+    ).double().restrictTo(0.01..1000.0).default(1.0)
+
     override fun help(context: Context): String =
         "Fly a vehicle's mission queue and take `pod queue` commands for it (on 127.0.0.1:${QueueProtocol.DEFAULT_PORT} unless --control says otherwise), until interrupted."
 
@@ -81,10 +89,12 @@ internal class QueueServe(out: Output) : VehicleCommandBase(out, "serve") {
 
     override suspend fun act(vehicle: MavlinkVehicle): Unit = coroutineScope {
         val host = checkNotNull(server) { "prepare() binds the server" }
-        val view = QueueView(out, json, vehicle)
+        // The vehicle's own queue, unless durations must count faster than the station's clock.
+        val queue = if (timeScale == 1.0) vehicle.queue else MissionQueue(kotlin.time.TimeSource.Monotonic, timeScale)
+        val view = QueueView(out, json, vehicle, queue)
         launch {
             try {
-                host.serve { answer(vehicle, it) }
+                host.serve { answer(vehicle, queue, it) }
             } catch (e: IOException) {
                 fail("the control endpoint on ${host.address} broke: ${e.message}")
             }
@@ -93,7 +103,7 @@ internal class QueueServe(out: Output) : VehicleCommandBase(out, "serve") {
         try {
             takeOffIfAsked(vehicle, view)
             view.serving(host.address)
-            QueueFlight(vehicle, vehicle.queue).fly(WhenEmpty.WAIT)
+            QueueFlight(vehicle, queue).fly(WhenEmpty.WAIT)
         } catch (e: QueueNotFlyable) {
             fail(e.message + if (takeoff == null) "; or pass --takeoff ALT" else "")
         } catch (e: QueueElementRefused) {
@@ -118,8 +128,7 @@ internal class QueueServe(out: Output) : VehicleCommandBase(out, "serve") {
     }
 
     /** What the host answers [request] with; called on the server's threads ([pod.core.queue.MissionQueue] is thread-safe). */
-    private fun answer(vehicle: MavlinkVehicle, request: QueueRequest): QueueResponse {
-        val queue = vehicle.queue
+    private fun answer(vehicle: MavlinkVehicle, queue: MissionQueue, request: QueueRequest): QueueResponse {
         var entry: EntryJson? = null
         var ended: EntryJson? = null
         when (request) {

@@ -18,6 +18,7 @@ import pod.cli.liveTerminal
 import pod.core.queue.EndReason
 import pod.core.queue.QueueEvent
 import pod.core.queue.QueueStatus
+import pod.core.queue.MissionQueue
 import pod.mavlink.MavlinkVehicle
 import kotlin.time.Duration.Companion.seconds
 
@@ -30,14 +31,13 @@ import kotlin.time.Duration.Companion.seconds
  * queue's contents change. With [json], a `queue_started`, `queue_ended` or `queue_emptied` line
  * per event and a `queue_status` line per status change.
  */
-internal class QueueView(private val out: Output, private val json: Boolean, private val vehicle: MavlinkVehicle) {
+internal class QueueView(private val out: Output, private val json: Boolean, private val vehicle: MavlinkVehicle, private val queue: MissionQueue) {
     private val animation: Animation<Widget>? = out.liveTerminal?.takeIf { !json }?.animation { it }
     private val recent = ArrayDeque<String>()
     private var header = "vehicle ${vehicle.systemId}"
 
     /** Shows the queue's events and status until cancelled. */
     suspend fun follow(): Nothing = coroutineScope {
-        val queue = vehicle.queue
         launch { queue.events.collect(::show) }
         launch {
             // An empty queue at the start goes without saying.
@@ -110,7 +110,7 @@ internal class QueueView(private val out: Output, private val json: Boolean, pri
     @Synchronized
     private fun redraw() {
         val live = animation ?: return
-        val status = vehicle.queue.status.value.toJson()
+        val status = queue.status.value.toJson()
         live.update(
             verticalLayout {
                 cell(TextStyles.bold("$header · ${state()}"))

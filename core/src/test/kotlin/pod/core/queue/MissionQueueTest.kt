@@ -79,6 +79,19 @@ class MissionQueueTest : StringSpec({
         }
     }
 
+    "a queue for a simulator running five times faster than its clock counts durations in vehicle time" {
+        runTest {
+            val queue = MissionQueue(testScheduler.timeSource, timeScale = 5.0)
+            val hold = queue.append(QueueElement(QueuePattern.Hold, duration = 60.seconds))
+            testScheduler.advanceTimeBy(11.seconds)
+            queue.expire()
+            queue.status.value shouldBe QueueStatus(hold, 5.seconds, emptyList())
+            testScheduler.advanceTimeBy(1.seconds)
+            queue.expire()
+            queue.status.value shouldBe QueueStatus.EMPTY
+        }
+    }
+
     "zero and negative durations mean none, as in Paparazzi" {
         QueueElement(QueuePattern.Hold, duration = 0.seconds).limit shouldBe null
         QueueElement(QueuePattern.Hold, duration = (-3).seconds).limit shouldBe null
