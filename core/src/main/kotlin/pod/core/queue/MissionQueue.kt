@@ -134,7 +134,10 @@ public class MissionQueue(
             after = transition(before, now)
             if (_state.compareAndSet(before, after)) break
         }
-        _status.value = QueueStatus(after.current, after.remaining(now), after.pending)
+        // From the latest state, not this call's: whichever of two racing calls publishes last
+        // publishes what both did.
+        val latest = _state.value
+        _status.value = QueueStatus(latest.current, latest.remaining(now), latest.pending)
         if (after !== before) announce(before, after, reason, now)
         return after
     }
