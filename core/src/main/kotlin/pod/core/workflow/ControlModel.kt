@@ -1,0 +1,101 @@
+package pod.core.workflow
+
+/** Which pass of a survey workflow is flown: the photo pass, or the revisit of flagged waypoints. */
+public enum class Pass {
+    /** Every waypoint, in order (photos, detections). */
+    FORWARD,
+
+    /** Only the flagged waypoints (e.g. a range measurement at each). */
+    BACKWARD,
+}
+
+/** The states an operator sees. */
+public sealed interface ControlPhase {
+    /** No vehicle ready yet (not heard, initialising, or not armable). */
+    public data object Waiting : ControlPhase
+
+    /** A vehicle is ready; no path built. */
+    public data object Ready : ControlPhase
+
+    /** A path is built and can be started, or cancelled. */
+    public data object PathBuilt : ControlPhase
+
+    /** Flying [pass], at [waypoint] (index into the pass's waypoints) once known. */
+    public data class Executing(val pass: Pass, val waypoint: Int? = null) : ControlPhase
+
+    /** Paused in [pass] at [waypoint]: holding position and altitude. */
+    public data class Paused(val pass: Pass, val waypoint: Int? = null) : ControlPhase
+
+    /** Both passes flown (or no backward pass needed); the vehicle landed at home. */
+    public data object Finished : ControlPhase
+
+    /** Aborted by the operator or by a failure ([reason]): the vehicle holds, then returns home. */
+    public data class Aborted(val reason: String) : ControlPhase
+}
+
+/** What the app shows: the [phase], the [plan] built (if any), and the event id it reflects. */
+public data class ControlState<P>(
+    /** The state the operator sees. */
+    val phase: ControlPhase,
+    /** The path built, or null. */
+    val plan: P?,
+    /** The id of the latest command this state reflects (0: none yet). */
+    val eventId: Long,
+)
+
+/** An operator's command, with its event id (growing with each command). */
+public sealed interface ControlCommand<out P> {
+    /** Grows with every command the operator sends. */
+    public val eventId: Long
+
+    /** Build a path: [plan] (a survey of an operator's polygon). */
+    public data class Build<P>(override val eventId: Long, val plan: P) : ControlCommand<P>
+
+    /** Drop the built path. */
+    public data class CancelPath(override val eventId: Long) : ControlCommand<Nothing>
+
+    /** Fly the built path. */
+    public data class Start(override val eventId: Long) : ControlCommand<Nothing>
+
+    /** Hold where the vehicle is, at its altitude. */
+    public data class Pause(override val eventId: Long) : ControlCommand<Nothing>
+
+    /** Go on from where it paused. */
+    public data class Resume(override val eventId: Long) : ControlCommand<Nothing>
+
+    /** Stop: hold, then return home (never descend in place). */
+    public data class Abort(override val eventId: Long) : ControlCommand<Nothing>
+}
+
+/**
+ * What the flight says about itself, stamped with the event id of the latest command it had
+ * applied when it said it ([eventId]).
+ */
+public sealed interface ControlReport {
+    /** The latest command the flight had applied. */
+    public val eventId: Long
+
+    /** Whether a vehicle is ready to fly ([ready]) while nothing is built or flown. */
+    public data class Vehicle(override val eventId: Long, val ready: Boolean) : ControlReport
+
+    /** Flying [pass] at [waypoint]. */
+    public data class Flying(override val eventId: Long, val pass: Pass, val waypoint: Int?) : ControlReport
+
+    /** Holding in [pass] at [waypoint] after a pause. */
+    public data class Holding(override val eventId: Long, val pass: Pass, val waypoint: Int?) : ControlReport
+
+    /** Done: landed at home. */
+    public data class Done(override val eventId: Long) : ControlReport
+
+    /** Stopped for [reason] (an abort carried out, or a failure): holding or returning home. */
+    public data class Stopped(override val eventId: Long, val reason: String) : ControlReport
+}
+
+/** What a command did. */
+public sealed interface CommandOutcome<out P> {
+    /** Taken: the app now shows [state]. */
+    public data class Accepted<P>(val state: ControlState<P>) : CommandOutcome<P>
+
+    /** Refused for [reason]: nothing changed. */
+    public data class Refused(val reason: String) : CommandOutcome<Nothing>
+}
