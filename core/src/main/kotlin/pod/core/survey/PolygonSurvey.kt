@@ -32,8 +32,12 @@ import kotlin.math.sin
  *   The passes are grouped into cells, regions that one back-and-forth pattern covers without
  *   leaving them (a boustrophedon cell decomposition: a new cell starts wherever the region splits
  *   around a notch or two branches join). Each cell is flown back and forth in one go, so the
- *   vehicle crosses a notch once per cell instead of once per strip; from one cell it flies
- *   straight to the nearest entry of the next, a transit leg that can cross outside the polygon.
+ *   vehicle crosses a notch once per cell instead of once per strip; then it goes on to the
+ *   nearest entry of an unflown cell (nearest in a straight line).
+ * - **Transit legs.** A leg from one pass to the next is straight unless that would cut across
+ *   the outside of a concave polygon; then it bends at polygon vertices, along the shortest path
+ *   inside the polygon (waypoints marked [SurveyWaypoint.transit]). So not only every waypoint
+ *   but every point of the flown path lies within (turnaround + spacing ÷ 2) of the polygon.
  * - **Entry.** A cell can be entered at four corners (its first or last pass, at either end); the
  *   first cell and corner are the ones whose first waypoint is nearest the start location.
  * - **Turnaround.** Each pass is extended by the turnaround distance before its start and after
@@ -116,7 +120,7 @@ public object PolygonSurvey {
             entryPoint = { Point(if (it.fromHigh) it.pass.extent.end + t else it.pass.extent.start - t, it.pass.v) },
             exitPoint = { Point(if (it.fromHigh) it.pass.extent.start - t else it.pass.extent.end + t, it.pass.v) },
         )
-        val path = TrackPath(t, triggerDistance.meters, trigger)
+        val path = TrackPath(t, triggerDistance.meters, trigger, TransitRouter(local))
         order.forEachIndexed { index, flown -> path.fly(index, flown) }
 
         return SurveyPlan(
@@ -153,7 +157,12 @@ internal class TrackFrame(private val origin: Location, angle: Angle) {
 }
 
 /** Builds the waypoint list pass by pass, in the local frame. */
-private class TrackPath(val turnaround: Double, val triggerDistance: Double, val trigger: CameraTrigger) {
+private class TrackPath(
+    val turnaround: Double,
+    val triggerDistance: Double,
+    val trigger: CameraTrigger,
+    val router: TransitRouter,
+) {
     val points = ArrayList<Pair<Point, SurveyWaypoint>>()
     private val placeholder = Location(0.0, 0.0)
 
@@ -163,7 +172,11 @@ private class TrackPath(val turnaround: Double, val triggerDistance: Double, val
         val from = if (flown.fromHigh) extent.end else extent.start
         val length = extent.length
         val v = flown.pass.v
-        if (turnaround > 0.0) add(Point(from - sign * turnaround, v), track, turnaround = true)
+        val entry = Point(from - sign * turnaround, v)
+        points.lastOrNull()?.let { (exit, _) ->
+            router.route(exit, entry).forEach { add(it, track, transit = true) }
+        }
+        if (turnaround > 0.0) add(entry, track, turnaround = true)
         val legs = when (trigger) {
             CameraTrigger.DISTANCE -> 1
             CameraTrigger.PER_WAYPOINT -> ceil(length / triggerDistance - 1e-9).toInt().coerceAtLeast(1)
@@ -189,7 +202,8 @@ private class TrackPath(val turnaround: Double, val triggerDistance: Double, val
         trackEnd: Boolean = false,
         turnaround: Boolean = false,
         photo: Boolean = false,
+        transit: Boolean = false,
     ) {
-        points += point to SurveyWaypoint(placeholder, track, trackStart, trackEnd, turnaround, photo)
+        points += point to SurveyWaypoint(placeholder, track, trackStart, trackEnd, turnaround, photo, transit)
     }
 }

@@ -35,6 +35,11 @@ public data class SurveyWaypoint(
     public val turnaround: Boolean,
     /** True where a photo is taken at the waypoint itself (see [CameraTrigger]). */
     public val photo: Boolean,
+    /**
+     * True for a bend of the transit from one track to the next (the [track] it leads to), at a
+     * polygon vertex, where a straight leg would cut across the outside of a concave polygon.
+     */
+    public val transit: Boolean = false,
 )
 
 /**

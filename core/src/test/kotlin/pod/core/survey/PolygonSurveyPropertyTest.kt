@@ -56,7 +56,7 @@ class PolygonSurveyPropertyTest : StringSpec({
         checkAll(config, surveyCases) { case ->
             val plan = case.plan(CameraTrigger.PER_WAYPOINT)
             val along = Ne(cos(case.angleDegrees * PI / 180), sin(case.angleDegrees * PI / 180))
-            for (points in plan.waypoints.groupBy { it.track }.values) {
+            for (points in plan.waypoints.filterNot { it.transit }.groupBy { it.track }.values) {
                 val line = points.map { local(case.origin, it.location) }
                 val length = line.first().distanceTo(line.last())
                 if (length < 0.01) continue // too short for the angle to mean anything after the lat/lon round trip
@@ -75,6 +75,20 @@ class PolygonSurveyPropertyTest : StringSpec({
                 val outside = distanceOutside(case.local, local(case.origin, waypoint.location))
                 val allowed = case.spacing / 2 + (if (waypoint.turnaround) case.turnaround else 0.0) + case.epsilon()
                 withClue("$case: $waypoint is $outside m outside") { outside shouldBeLessThanOrEqual allowed }
+            }
+        }
+    }
+
+    "every point of the flown path, transits between tracks included, stays within turnaround + half a spacing" {
+        checkAll(config, surveyCases) { case ->
+            val path = case.plan().locations.map { local(case.origin, it) }
+            val allowed = case.spacing / 2 + case.turnaround + case.epsilon()
+            for ((a, b) in path.zipWithNext()) {
+                for (k in 1..19) {
+                    val p = Ne(a.north + (b.north - a.north) * k / 20, a.east + (b.east - a.east) * k / 20)
+                    val outside = distanceOutside(case.local, p)
+                    withClue("$case: leg $a → $b passes $outside m outside at $p") { outside shouldBeLessThanOrEqual allowed }
+                }
             }
         }
     }
@@ -121,7 +135,7 @@ class PolygonSurveyPropertyTest : StringSpec({
         checkAll(config, surveyCases) { case ->
             val plan = case.plan()
             val start = local(case.origin, case.start)
-            val tracks = plan.waypoints.groupBy { it.track }
+            val tracks = plan.waypoints.filterNot { it.transit }.groupBy { it.track }
             val candidates = listOf(tracks.getValue(0), tracks.getValue(plan.trackCount - 1))
                 .flatMap { listOf(it.first(), it.last()) }
                 .map { local(case.origin, it.location).distanceTo(start) }
@@ -137,9 +151,9 @@ class PolygonSurveyPropertyTest : StringSpec({
                 pod.core.units.Angle(case.angleDegrees), case.turnaround.m, case.start, CameraTrigger.PER_WAYPOINT,
             )
             for (points in plan.waypoints.groupBy { it.track }.values) {
-                val photos = points.filter { !it.turnaround }
+                val photos = points.filter { !it.turnaround && !it.transit }
                 photos.all { it.photo } shouldBe true
-                points.filter { it.turnaround }.none { it.photo } shouldBe true
+                points.filter { it.turnaround || it.transit }.none { it.photo } shouldBe true
                 photos.map { local(case.origin, it.location) }.zipWithNext { p, q -> p.distanceTo(q) }
                     .forEach { it shouldBeLessThanOrEqual trigger + case.epsilon() }
             }

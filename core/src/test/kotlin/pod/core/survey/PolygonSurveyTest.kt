@@ -76,6 +76,18 @@ class PolygonSurveyTest : StringSpec({
         armOfTrack shouldBe List(2) { "base" } + List(3) { "west" } + List(3) { "east" }
     }
 
+    "a leg that would cut across a U's notch bends at the notch's corner instead" {
+        val u = area(0 to 0, 0 to 120, 100 to 120, 100 to 80, 40 to 80, 40 to 40, 100 to 40, 100 to 0)
+        val plan = PolygonSurvey.plan(u, 30.m, SurveySpacing.Direct(20.m), 0.deg, start = origin.offset(100.m, 0.m))
+        plan.rounded() shouldBe listOf(
+            100.0 to 10.0, 0.0 to 10.0, 0.0 to 30.0, 100.0 to 30.0, 40.0 to 40.0,
+            40.0 to 50.0, 0.0 to 50.0, 0.0 to 70.0, 40.0 to 70.0, 40.0 to 80.0,
+            100.0 to 90.0, 0.0 to 90.0, 0.0 to 110.0, 100.0 to 110.0,
+        )
+        plan.waypoints.filter { it.transit }.map { it.track } shouldBe listOf(2, 4)
+        plan.waypoints.none { it.transit && it.photo } shouldBe true
+    }
+
     "photo per waypoint cuts each track into equal legs of at most the trigger distance" {
         val plan = PolygonSurvey.plan(
             square, 30.m, SurveySpacing.Direct(50.m, triggerDistance = 30.m), 0.deg,
