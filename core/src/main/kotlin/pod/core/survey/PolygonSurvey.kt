@@ -48,11 +48,14 @@ import kotlin.math.sin
  * polygon's chord anywhere in the strip, and longer only by what the edges inside the strip add.
  */
 public object PolygonSurvey {
-    /** Widths that round to within this fraction of a whole number of spacings take no extra track. */
+    /** Widths within this fraction above a whole number of spacings take no extra track (lat/lon rounding). */
     private const val STRIP_TOLERANCE: Double = 1e-9
 
     /** The smallest area, in square metres, that is planned; anything smaller is a degenerate polygon. */
     public const val MIN_AREA_SQUARE_METERS: Double = 1.0
+
+    /** The most tracks one survey may have; a spacing that needs more is refused (a typo in units, usually). */
+    public const val MAX_TRACKS: Int = 10_000
 
     /**
      * Plans a survey of [polygon] (≥ 3 vertices, not self-intersecting; a repeated closing vertex
@@ -89,6 +92,11 @@ public object PolygonSurvey {
 
         val frame = TrackFrame(vertices.first(), trackAngle)
         val local = vertices.map(frame::toLocal)
+        local.indices.firstOrNull { local[it] == local[(it + 1) % local.size] }?.let { i ->
+            throw IllegalArgumentException(
+                "survey polygon repeats a point: vertex $i and vertex ${(i + 1) % local.size} are the same",
+            )
+        }
         firstSelfIntersection(local)?.let { (i, j) ->
             val n = local.size
             throw IllegalArgumentException(
@@ -104,9 +112,13 @@ public object PolygonSurvey {
         val s = trackSpacing.meters
         val lowV = local.minOf { it.v }
         val width = local.maxOf { it.v } - lowV
-        val strips = ceil(width / s - STRIP_TOLERANCE).toInt().coerceAtLeast(1)
-        val firstLine = lowV + (width - (strips - 1) * s) / 2.0
-        val passes = (0 until strips).map { strip ->
+        val strips = ceil(width / s * (1.0 - STRIP_TOLERANCE)).coerceAtLeast(1.0)
+        require(strips <= MAX_TRACKS) {
+            "track spacing ${trackSpacing.meters} m is too small for a polygon ${Distance(width)} wide: " +
+                "${strips.toLong()} tracks (at most $MAX_TRACKS)"
+        }
+        val firstLine = lowV + (width - (strips - 1.0) * s) / 2.0
+        val passes = (0 until strips.toInt()).map { strip ->
             val line = firstLine + strip * s
             // Shrunk by a hair so that an edge lying exactly on the border between two strips
             // (an L's inner edge at a whole number of spacings) does not stretch both strips' tracks.

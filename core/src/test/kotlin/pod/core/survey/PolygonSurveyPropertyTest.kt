@@ -69,6 +69,11 @@ class PolygonSurveyPropertyTest : StringSpec({
     }
 
     "no waypoint lies outside the polygon grown by the turnaround plus half a spacing; track ends within half a spacing" {
+        // Why half a spacing more than the turnaround: full coverage forces it. Take a triangle
+        // whose base is parallel to the tracks, half a spacing below the first track: the base's
+        // corners are within s/2 of that track only if it reaches right above them, where the
+        // triangle has already narrowed, i.e. up to s/2 outside it. A planner that kept the track
+        // ends on the polygon would fail the coverage property instead.
         checkAll(config, surveyCases) { case ->
             val plan = case.plan()
             for (waypoint in plan.waypoints) {

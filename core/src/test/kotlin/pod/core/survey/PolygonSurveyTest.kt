@@ -35,6 +35,11 @@ class PolygonSurveyTest : StringSpec({
         plan.waypoints.map { it.trackEnd } shouldBe List(4) { listOf(false, true) }.flatten()
     }
 
+    "a closing vertex that repeats the first one is dropped" {
+        PolygonSurvey.plan(square + square.first(), 30.m, SurveySpacing.Direct(25.m)) shouldBe
+            PolygonSurvey.plan(square, 30.m, SurveySpacing.Direct(25.m))
+    }
+
     "at 90° the tracks run east–west, and the turnaround extends each one outside the square at both ends" {
         val plan = PolygonSurvey.plan(square, 30.m, SurveySpacing.Direct(50.m), 90.deg, turnaround = 10.m)
         plan.rounded() shouldBe listOf(
@@ -129,6 +134,10 @@ class PolygonSurveyTest : StringSpec({
         failure { PolygonSurvey.plan(square, 0.m, direct) } shouldContain "survey height"
         failure { PolygonSurvey.plan(square, 30.m, direct, turnaround = (-1).m) } shouldContain "turnaround"
         failure { PolygonSurvey.plan(area(0 to 0, 0 to 1, 1 to 0), 30.m, direct) } shouldContain "too small for one track"
+        failure { PolygonSurvey.plan(area(0 to 0, 0 to 100, 0 to 100, 100 to 0), 30.m, direct) } shouldContain
+            "repeats a point: vertex 1 and vertex 2"
+        failure { PolygonSurvey.plan(square, 30.m, SurveySpacing.Direct(0.001.m)) } shouldContain
+            "too small for a polygon 100.0 m wide: 100000 tracks (at most 10000)"
         val camera = Camera(13.2.mm, 8.8.mm, 8.8.mm, 5472, 3648)
         failure { SurveySpacing.FromCamera(camera, 100.m, frontOverlap = 1.0, sideOverlap = 0.5) } shouldContain "front overlap"
         failure { SurveySpacing.FromCamera(camera, 100.m, frontOverlap = 0.5, sideOverlap = -0.1) } shouldContain "side overlap"
