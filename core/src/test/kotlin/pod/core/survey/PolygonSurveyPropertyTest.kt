@@ -134,6 +134,24 @@ class PolygonSurveyPropertyTest : StringSpec({
         }
     }
 
+    "every transit from one track to the next, concave notches included, is at most 2T + s + P/2 long" {
+        // A track's last waypoint X and the next one's first Y each lie within T + s/2 of their
+        // nearest polygon points p, q; the planner flies X → (shortest path inside the polygon
+        // from p to q) → Y, and that shortest path is at most half the perimeter P (the shorter
+        // way round the boundary is one path inside). A router taking the long way would fail.
+        checkAll(config, surveyCases) { case ->
+            val plan = case.plan()
+            val perimeter = edges(case.local).sumOf { (a, b) -> a.distanceTo(b) }
+            val points = plan.waypoints.map { it to local(case.origin, it.location) }
+            for (track in 1 until plan.trackCount) {
+                val from = points.indexOfLast { it.first.track == track - 1 }
+                val to = points.indexOfFirst { it.first.track == track && !it.first.transit }
+                val length = (from until to).sumOf { points[it].second.distanceTo(points[it + 1].second) }
+                length shouldBeLessThanOrEqual 2 * case.turnaround + case.spacing + perimeter / 2 + case.epsilon()
+            }
+        }
+    }
+
     "entry: the first waypoint is the nearest to the start among the ends of the first and last tracks" {
         // For a convex polygon these are exactly the four corners of the one cell the planner
         // considers; for a concave one they are two of the cells' corners.
