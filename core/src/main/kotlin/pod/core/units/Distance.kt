@@ -33,6 +33,9 @@ public value class Distance(
 /** This many metres. */
 public val Number.m: Distance get() = Distance(toDouble())
 
+/** This many millimetres (camera sensor sizes and focal lengths). */
+public val Number.mm: Distance get() = Distance(toDouble() / 1000.0)
+
 /** This many kilometres. */
 public val Number.km: Distance get() = Distance(toDouble() * 1000.0)
 
