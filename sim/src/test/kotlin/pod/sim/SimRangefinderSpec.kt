@@ -17,6 +17,7 @@ import pod.mavlink.MessageIds
 import pod.mavlink.link.MemoryNetwork
 import pod.sim.world.Hill
 import pod.sim.world.Rangefinder
+import pod.sim.world.SimObject
 import pod.sim.world.Terrain
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.minutes
@@ -81,6 +82,27 @@ class SimRangefinderSpec : StringSpec({
             // Hovering at 15 m: the next reading (every 2 s) is the height there.
             withTimeout(5.seconds) { vehicle.telemetry.rangefinder.first { it != null && it.meters > 14.5 } }!!.meters shouldBe (terrainHeight(sim) plusOrMinus 0.3)
         }, Autopilot.PX4)
+    }
+
+    "a platform's configure hook gives every vehicle the same world: each boots on the terrain, and photos see the same objects" {
+        runTest(timeout = 3.minutes) {
+            val timebase = Timebase(testScheduler.timeSource, StandardTestDispatcher(testScheduler))
+            val network = MemoryNetwork(backgroundScope, timebase)
+            val objects = SimObject.scatter(seed = 3, count = 50, center = home, radius = 80.m)
+            val fleet = SimPlatform.start(
+                backgroundScope, List(2) { SimFlavor.ARDUCOPTER }, timeScale = 1.0, spacing = 40.m,
+                timebase = timebase, openLink = LinkOpener.memory(network),
+            ) { it.copy(terrain = terrain, rangefinder = Rangefinder(), objects = objects) }
+            try {
+                for (sim in fleet.simulated) {
+                    sim.config.objects shouldBe objects
+                    sim.state.value.location.altitude.meters shouldBe (terrain.elevationAt(sim.config.home).meters plusOrMinus 1e-9)
+                    sim.state.value.home shouldBe sim.state.value.location
+                }
+            } finally {
+                fleet.close()
+            }
+        }
     }
 })
 
