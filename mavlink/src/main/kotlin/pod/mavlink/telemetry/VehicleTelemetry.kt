@@ -1,6 +1,7 @@
 package pod.mavlink.telemetry
 
 import io.dronefleet.mavlink.common.Attitude as AttitudeMessage
+import io.dronefleet.mavlink.common.CameraImageCaptured
 import io.dronefleet.mavlink.common.DistanceSensor
 import io.dronefleet.mavlink.common.ExtendedSysState
 import io.dronefleet.mavlink.common.GlobalPositionInt
@@ -49,6 +50,7 @@ public class VehicleTelemetry internal constructor() {
     private val _missionCurrent = MutableStateFlow<Int?>(null)
     private val _rangefinder = MutableStateFlow<Distance?>(null)
     private val _itemReached = MutableSharedFlow<Int>(extraBufferCapacity = 256, onBufferOverflow = BufferOverflow.DROP_OLDEST)
+    private val _imagesCaptured = MutableSharedFlow<CapturedImage>(extraBufferCapacity = 256, onBufferOverflow = BufferOverflow.DROP_OLDEST)
 
     /** Global position, relative altitude, heading and velocity (GLOBAL_POSITION_INT). */
     public val position: StateFlow<Position?> = _position.asStateFlow()
@@ -94,6 +96,13 @@ public class VehicleTelemetry internal constructor() {
     /** Each mission item the vehicle reports reached (MISSION_ITEM_REACHED), as it happens. */
     public val itemReached: SharedFlow<Int> = _itemReached.asSharedFlow()
 
+    /**
+     * Each photo the autopilot reports taken (CAMERA_IMAGE_CAPTURED from the autopilot's own
+     * component, as ArduPilot's AP_Camera sends it), as it happens. Pod's simulator puts what a
+     * photo detected in [CapturedImage.fileUrl] (see pod.sim.SimDetections).
+     */
+    public val imagesCaptured: SharedFlow<CapturedImage> = _imagesCaptured.asSharedFlow()
+
     internal fun onHeartbeat(identity: VehicleIdentity, heartbeat: Heartbeat) {
         _mode.value = FlightModes.decode(identity.autopilot, identity.type, heartbeat.customMode())
         _armed.value = heartbeat.baseMode().value() and MAV_MODE_FLAG_SAFETY_ARMED != 0
@@ -135,6 +144,18 @@ public class VehicleTelemetry internal constructor() {
                 LandedState.entries.getOrElse(message.landedState().value()) { LandedState.UNDEFINED }
             is MissionCurrent -> _missionCurrent.value = message.seq()
             is MissionItemReached -> _itemReached.tryEmit(message.seq())
+            is CameraImageCaptured -> {
+                val lat = message.lat() / 1e7
+                val lon = message.lon() / 1e7
+                if (lat !in -90.0..90.0 || lon !in -180.0..180.0) return false
+                _imagesCaptured.tryEmit(
+                    CapturedImage(
+                        imageIndex = message.imageIndex(), timeBootMs = message.timeBootMs(),
+                        location = Location(lat, lon, (message.alt() / 1000.0).m), relativeAltitude = (message.relativeAlt() / 1000.0).m,
+                        success = message.captureResult() == 1, fileUrl = message.fileUrl() ?: "",
+                    ),
+                )
+            }
             is DistanceSensor -> {
                 if (message.orientation().value() != MAV_SENSOR_ROTATION_PITCH_270) return true
                 val cm = message.currentDistance()

@@ -3,6 +3,9 @@ package pod.sim
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.doubles.plusOrMinus
 import io.kotest.matchers.shouldBe
+import io.kotest.matchers.ints.shouldBeGreaterThan
+import kotlinx.coroutines.CoroutineStart
+import kotlinx.coroutines.async
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.test.StandardTestDispatcher
 import kotlinx.coroutines.test.runTest
@@ -24,20 +27,23 @@ import kotlin.time.Duration.Companion.minutes
 import kotlin.time.Duration.Companion.seconds
 
 /**
- * A simulated vehicle with a lidar over a hill and a ground station, in virtual time on an
- * in-memory network: what reaches `telemetry.rangefinder`, and when the autopilot streams it.
+ * A simulated vehicle with a lidar over a hill and objects on the ground, and a ground station, in
+ * virtual time on an in-memory network: what reaches `telemetry.rangefinder` and when the autopilot
+ * streams it, and how a photo's detections reach the ground.
  */
-class SimRangefinderSpec : StringSpec({
+class SimWorldSpec : StringSpec({
     val home = SimVehicleConfig.DEFAULT_HOME
     // Home sits on a 3 m rise so the vehicle boots on the terrain, not on home's configured altitude.
     val terrain = Terrain(home, listOf(Hill(0.m, 0.m, 3.m, 200.m), Hill(60.m, 0.m, 10.m, 12.m)))
+
+    val objects = SimObject.scatter(seed = 5, count = 600, center = home, radius = 120.m)
 
     fun world(block: suspend kotlinx.coroutines.CoroutineScope.(GroundStation, SimVehicle) -> Unit, autopilot: Autopilot) = runTest(timeout = 3.minutes) {
         val timebase = Timebase(testScheduler.timeSource, StandardTestDispatcher(testScheduler))
         val network = MemoryNetwork(backgroundScope, timebase)
         val gcs = GroundStation.open(network.open("udpin://127.0.0.1:0"), backgroundScope, GroundStationConfig(timebase = timebase))
         val sim = SimVehicle(
-            SimVehicleConfig(systemId = 3, autopilot = autopilot, gcs = "udpout://127.0.0.1:${gcs.link.localPort}", terrain = terrain, rangefinder = Rangefinder()),
+            SimVehicleConfig(systemId = 3, autopilot = autopilot, gcs = "udpout://127.0.0.1:${gcs.link.localPort}", terrain = terrain, rangefinder = Rangefinder(), objects = objects),
             timebase = timebase, openLink = LinkOpener.memory(network),
         )
         sim.start(backgroundScope)
@@ -84,11 +90,27 @@ class SimRangefinderSpec : StringSpec({
         }, Autopilot.PX4)
     }
 
+    "a photo's detections reach the ground in CAMERA_IMAGE_CAPTURED and read back as the photo's objects" {
+        world({ gcs, sim ->
+            val vehicle = withTimeout(10.seconds) { gcs.vehicles.first { 3 in it } }.getValue(3)
+            vehicle.action.setMode("GUIDED")
+            vehicle.action.arm()
+            vehicle.action.takeoff(30.m)
+            val captured = async(start = CoroutineStart.UNDISPATCHED) { vehicle.telemetry.imagesCaptured.first() }
+            sim.autopilot.camera.shoot() // the test runs on the vehicle's (single) thread
+            val image = withTimeout(5.seconds) { captured.await() }
+            val photo = sim.photos.value.single()
+            photo.detected.size shouldBeGreaterThan 3
+            image.imageIndex shouldBe photo.index
+            image.success shouldBe true
+            SimDetections.parse(image.fileUrl) shouldBe SimDetections.Detections(photo.index, photo.detected.map { it.id }.sorted())
+        }, Autopilot.ARDUPILOT)
+    }
+
     "a platform's configure hook gives every vehicle the same world: each boots on the terrain, and photos see the same objects" {
         runTest(timeout = 3.minutes) {
             val timebase = Timebase(testScheduler.timeSource, StandardTestDispatcher(testScheduler))
             val network = MemoryNetwork(backgroundScope, timebase)
-            val objects = SimObject.scatter(seed = 3, count = 50, center = home, radius = 80.m)
             val fleet = SimPlatform.start(
                 backgroundScope, List(2) { SimFlavor.ARDUCOPTER }, timeScale = 1.0, spacing = 40.m,
                 timebase = timebase, openLink = LinkOpener.memory(network),

@@ -1,6 +1,12 @@
 package pod.mavlink.telemetry
 
+import io.dronefleet.mavlink.common.CameraImageCaptured
 import io.dronefleet.mavlink.common.DistanceSensor
+import kotlinx.coroutines.CoroutineStart
+import kotlinx.coroutines.async
+import kotlinx.coroutines.flow.first
+import java.math.BigInteger
+import pod.core.units.Location
 import io.dronefleet.mavlink.common.MavDistanceSensor
 import io.dronefleet.mavlink.common.MavSensorOrientation
 import io.kotest.core.spec.style.StringSpec
@@ -15,7 +21,7 @@ private fun reading(cm: Int, orientation: MavSensorOrientation = MavSensorOrient
         .type(MavDistanceSensor.MAV_DISTANCE_SENSOR_LASER).id(0).orientation(orientation)
         .build()
 
-class RangefinderTelemetryTest : StringSpec({
+class SensorTelemetryTest : StringSpec({
     "a downward DISTANCE_SENSOR sets the height above ground; out of range clears it; other directions are ignored" {
         val telemetry = VehicleTelemetry()
         telemetry.rangefinder.value shouldBe null
@@ -40,5 +46,16 @@ class RangefinderTelemetryTest : StringSpec({
         val telemetry = VehicleTelemetry()
         telemetry.onMessage(decoded)
         telemetry.rangefinder.value shouldBe 17.77.m
+    }
+
+    "CAMERA_IMAGE_CAPTURED comes out as a captured image, file_url and all; one with a nonsense position is refused" {
+        val telemetry = VehicleTelemetry()
+        val seen = async(start = CoroutineStart.UNDISPATCHED) { telemetry.imagesCaptured.first() }
+        val message = CameraImageCaptured.builder()
+            .timeBootMs(61_000).timeUtc(BigInteger.ZERO).lat(411_780_460).lon(-85_957_860).alt(150_000).relativeAlt(30_000)
+            .q(listOf(1f, 0f, 0f, 0f)).imageIndex(4).captureResult(1).fileUrl("pod-sim://photo/4?objects=2,9").build()
+        telemetry.onMessage(message) shouldBe true
+        seen.await() shouldBe CapturedImage(4, 61_000, Location(41.178046, -8.595786, 150.m), 30.m, true, "pod-sim://photo/4?objects=2,9")
+        telemetry.onMessage(CameraImageCaptured.builder().lat(Int.MAX_VALUE).lon(0).build()) shouldBe false
     }
 })
