@@ -9,13 +9,16 @@ import kotlin.math.tan
 
 /**
  * What a simulated vehicle's sensors see of the world: the ground under it ([terrain], or flat at
- * [flatGround] metres AMSL without one) and the [objects] its camera may photograph through [fov].
+ * [flatGround] metres AMSL without one) and the [objects] its camera (if it has one) may photograph
+ * through [fov].
  */
 internal class SimWorld(
     val flatGround: Double,
     val terrain: Terrain? = null,
     val objects: List<SimObject> = emptyList(),
     val fov: CameraFov = CameraFov.DEFAULT,
+    /** Whether it carries a camera at all (commands to a missing one are UNSUPPORTED). */
+    val camera: Boolean = true,
 ) {
     /** Ground elevation AMSL in metres under [location]. */
     fun groundAt(location: Location): Double = terrain?.elevationMetres(location) ?: flatGround

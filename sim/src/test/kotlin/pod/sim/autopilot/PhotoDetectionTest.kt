@@ -124,4 +124,35 @@ class PhotoDetectionTest : StringSpec({
         read.leftOff shouldBeGreaterThan 0
         SimDetections.parse("file:///x.jpg") shouldBe null
     }
+
+    "a ground station's camera commands take photos as ArduPilot's AP_Camera does; a vehicle without a camera refuses them" {
+        val ap = world(null)
+        ap.run(2.5)
+        ap.command(CommandRequest(2000, param1 = 0f, param2 = 0f, param3 = 1f)) shouldBe CommandResult.ACCEPTED // one photo
+        ap.run(0.1)
+        ap.photos.size shouldBe 1
+        ap.command(CommandRequest(203, x = 1.0)) shouldBe CommandResult.ACCEPTED // DO_DIGICAM_CONTROL, shoot
+        ap.command(CommandRequest(203, x = 0.0)) shouldBe CommandResult.ACCEPTED // no shot asked
+        ap.run(0.1)
+        ap.photos.size shouldBe 2
+        ap.command(CommandRequest(2000, param2 = 1f, param3 = 3f)) shouldBe CommandResult.ACCEPTED // three, a second apart
+        ap.run(5.0)
+        ap.photos.size shouldBe 5
+        ap.command(CommandRequest(2000, param2 = 1f, param3 = 0f)) shouldBe CommandResult.ACCEPTED // until stopped
+        ap.run(2.0)
+        ap.command(CommandRequest(2001)) shouldBe CommandResult.ACCEPTED
+        val stoppedAt = ap.photos.size
+        stoppedAt shouldBeGreaterThan 5
+        ap.run(3.0)
+        ap.photos.size shouldBe stoppedAt
+        ap.command(CommandRequest(2000, param1 = -1f, param3 = 1f)) shouldBe CommandResult.UNSUPPORTED
+
+        val blind = SimAutopilot(
+            Autopilot.ARDUPILOT, VehicleType.QUADROTOR, 1, HOME, 1.0, MissionServer(MissionServerFlavor.ARDUPILOT),
+            world = SimWorld(HOME.altitude.meters, camera = false),
+        )
+        blind.command(CommandRequest(2000, param3 = 1f)) shouldBe CommandResult.UNSUPPORTED
+        blind.run(0.1)
+        blind.photos.shouldBeEmpty()
+    }
 })
