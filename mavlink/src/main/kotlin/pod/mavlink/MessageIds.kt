@@ -30,6 +30,9 @@ public object MessageIds {
     /** VFR_HUD: air and ground speed, heading, climb. */
     public const val VFR_HUD: Int = 74
 
+    /** DISTANCE_SENSOR: a rangefinder's reading (a downward one measures the height above ground). */
+    public const val DISTANCE_SENSOR: Int = 132
+
     /** AUTOPILOT_VERSION (sent when asked with MAV_CMD_REQUEST_MESSAGE, not streamed). */
     public const val AUTOPILOT_VERSION: Int = 148
 

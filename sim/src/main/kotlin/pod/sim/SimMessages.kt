@@ -8,6 +8,9 @@ import io.dronefleet.mavlink.common.AutopilotVersion
 import io.dronefleet.mavlink.common.CameraInformation
 import io.dronefleet.mavlink.common.CameraImageCaptured
 import io.dronefleet.mavlink.common.CommandAck
+import io.dronefleet.mavlink.common.DistanceSensor
+import io.dronefleet.mavlink.common.MavDistanceSensor
+import io.dronefleet.mavlink.common.MavSensorOrientation
 import io.dronefleet.mavlink.common.ExtendedSysState
 import io.dronefleet.mavlink.common.GlobalPositionInt
 import io.dronefleet.mavlink.common.GpsFixType
@@ -57,7 +60,32 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
         MessageIds.MISSION_CURRENT -> missionCurrent(s.missionCurrent)
         MessageIds.AUTOPILOT_VERSION -> autopilotVersion()
         MessageIds.CAMERA_INFORMATION -> if (config.camera) cameraInformation() else null
+        MessageIds.DISTANCE_SENSOR -> distanceSensor(s)
         else -> null
+    }
+
+    /**
+     * The downward rangefinder's reading, as GCS_MAVLINK::send_distance_sensor
+     * (libraries/GCS_MAVLink/GCS_Common.cpp) fills it: min, max and current distance in cm, the
+     * sensor type, id = instance 0, orientation (ROTATION_PITCH_270 = 25, downward), covariance 0
+     * ("unknown" in ArduPilot's use), no field of view or quaternion, signal quality 0 (unknown).
+     * Nothing without a rangefinder: neither autopilot sends DISTANCE_SENSOR with no sensor.
+     */
+    private fun distanceSensor(s: SimState): DistanceSensor? {
+        val sensor = config.rangefinder ?: return null
+        fun cm(metres: Double) = (metres * 100).roundToInt().coerceIn(0, 65535)
+        return DistanceSensor.builder()
+            .timeBootMs(timeBootMs())
+            .minDistance(cm(sensor.minDistance.meters))
+            .maxDistance(cm(sensor.maxDistance.meters))
+            .currentDistance(cm(sensor.reading(s.heightAboveGround.meters)))
+            .type(MavDistanceSensor.MAV_DISTANCE_SENSOR_LASER)
+            .id(0)
+            .orientation(MavSensorOrientation.MAV_SENSOR_ROTATION_PITCH_270)
+            .covariance(0)
+            .quaternion(listOf(0f, 0f, 0f, 0f))
+            .signalQuality(0)
+            .build()
     }
 
     /**
@@ -136,7 +164,7 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
             .q(listOf(1f, 0f, 0f, 0f))
             .imageIndex(out.photo.index)
             .captureResult(1)
-            .fileUrl("")
+            .fileUrl(SimDetections.fileUrl(out.photo.index, out.photo.detected.map { it.id }))
             .build()
     }
 
@@ -240,6 +268,8 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
             MessageIds.SYS_STATUS, MessageIds.GPS_RAW_INT, MessageIds.ATTITUDE,
             MessageIds.GLOBAL_POSITION_INT, MessageIds.HOME_POSITION, MessageIds.EXTENDED_SYS_STATE,
             MessageIds.VFR_HUD, MessageIds.MISSION_CURRENT, MessageIds.AUTOPILOT_VERSION,
+            // Accepted with or without a sensor, as both autopilots accept an interval for a message they know.
+            MessageIds.DISTANCE_SENSOR,
         )
         /** MISSION_INT, COMMAND_INT, MAVLINK2, MISSION_FENCE, MISSION_RALLY (MAV_PROTOCOL_CAPABILITY bits). */
         const val CAPABILITIES = 0x4 or 0x8 or 0x2000 or 0x4000 or 0x8000

@@ -82,7 +82,9 @@ public class SimPlatform private constructor(
          * The station and the vehicles read [timebase] and open their links with [openLink]: on a
          * test scheduler's timebase and a [pod.mavlink.link.MemoryNetwork] the whole fleet runs in
          * virtual time (pass a [timeScale] of 1 there). [station] configures the ground station
-         * (its timebase is replaced by [timebase]).
+         * (its timebase is replaced by [timebase]). [configure] adjusts each vehicle's configuration
+         * before it starts: `{ it.copy(terrain = t, rangefinder = Rangefinder(), objects = o) }` gives
+         * every vehicle the same world.
          */
         public suspend fun start(
             scope: CoroutineScope,
@@ -96,6 +98,7 @@ public class SimPlatform private constructor(
             timebase: Timebase = Timebase.System,
             openLink: LinkOpener = LinkOpener.Udp,
             station: GroundStationConfig = GroundStationConfig(),
+            configure: (SimVehicleConfig) -> SimVehicleConfig = { it },
         ): SimPlatform {
             require(flavors.size in 1..254) { "flavors must name 1..254 vehicles, was ${flavors.size}" }
             require(firstSystemId in 1..254 && firstSystemId + flavors.size - 1 <= 254) { "system ids $firstSystemId..${firstSystemId + flavors.size - 1} must lie within 1..254" }
@@ -107,9 +110,11 @@ public class SimPlatform private constructor(
                 val positions = SimLayout.ring(home, flavors.size, spacing)
                 flavors.forEachIndexed { i, flavor ->
                     val sim = SimVehicle(
-                        SimVehicleConfig(
-                            systemId = firstSystemId + i, type = flavor.type, autopilot = flavor.autopilot, home = positions[i],
-                            gcs = "udpout://127.0.0.1:${gcs.link.localPort}", timeScale = timeScale,
+                        configure(
+                            SimVehicleConfig(
+                                systemId = firstSystemId + i, type = flavor.type, autopilot = flavor.autopilot, home = positions[i],
+                                gcs = "udpout://127.0.0.1:${gcs.link.localPort}", timeScale = timeScale,
+                            ),
                         ),
                         timebase = timebase,
                         openLink = openLink,

@@ -41,7 +41,12 @@ public data class SimState(
      * vehicle, not only in its telemetry.
      */
     public val target: Location? = null,
+    /** Elevation above mean sea level of the ground straight below it (home's altitude over flat ground). */
+    public val groundAltitude: Distance = home.altitude,
 ) {
+    /** Height above the ground straight below it: what a downward rangefinder measures. */
+    public val heightAboveGround: Distance get() = (location.altitude.meters - groundAltitude.meters).m
+
     /** Height above home. */
     public val relativeAltitude: Distance get() = (location.altitude.meters - home.altitude.meters).m
 

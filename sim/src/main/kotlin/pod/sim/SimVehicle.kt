@@ -55,6 +55,7 @@ import pod.mavlink.mission.MissionWire
 import pod.sim.autopilot.CommandRequest
 import pod.sim.autopilot.SimAutopilot
 import pod.sim.autopilot.SimOutput
+import pod.sim.world.SimWorld
 
 /**
  * A simulated MAVLink vehicle on its own UDP socket, sending to a ground station as SITL's
@@ -104,9 +105,10 @@ public class SimVehicle(
 
     /** The simulated autopilot; everything touching it runs on the vehicle's single-threaded dispatcher. */
     internal val autopilot = SimAutopilot(
-        config.autopilot, config.type, config.systemId, config.home, config.initialCharge, missionServer,
+        config.autopilot, config.type, config.systemId, config.bootLocation, config.initialCharge, missionServer,
         readyAfter = config.positionReadyAfter.toDouble(DurationUnit.SECONDS),
         sensorsReadyAfter = config.sensorsReadyAfter.toDouble(DurationUnit.SECONDS),
+        world = SimWorld(config.bootLocation.altitude.meters, config.terrain, config.objects, config.cameraFov, config.camera),
     )
     private val _photos = MutableStateFlow<List<PhotoEvent>>(emptyList())
     private val _reached = MutableStateFlow<List<Int>>(emptyList())

@@ -5,6 +5,10 @@ import pod.core.units.Location
 import pod.core.units.m
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleType
+import pod.sim.world.CameraFov
+import pod.sim.world.Rangefinder
+import pod.sim.world.SimObject
+import pod.sim.world.Terrain
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
@@ -71,6 +75,24 @@ public data class SimVehicleConfig(
      * default so that tests which do not test this need not wait.
      */
     public val missionStorageReadyAfter: Duration = Duration.ZERO,
+    /**
+     * The ground it flies over; null (the default) is flat ground at [home]'s altitude. With a
+     * terrain the vehicle boots standing on it: its home altitude is the terrain's elevation at
+     * [home] ([home]'s own altitude is ignored), and it lands wherever the terrain is under it.
+     * Give every vehicle of a scenario the same terrain so they share its hills.
+     */
+    public val terrain: Terrain? = null,
+    /**
+     * A downward lidar measuring the height above [terrain]; null (the default) is none. With one
+     * the vehicle sends DISTANCE_SENSOR as its autopilot does: ArduPilot in its EXTRA3 stream group,
+     * so only once a ground station asks (MAV_CMD_SET_MESSAGE_INTERVAL for message 132); PX4 at
+     * 0.5 Hz unasked ([DEFAULT_STREAM_RATES]).
+     */
+    public val rangefinder: Rangefinder? = null,
+    /** Objects on the ground that the camera's photos detect when they fall inside a photo's footprint. */
+    public val objects: List<SimObject> = emptyList(),
+    /** The camera's field of view, which with the height above the terrain sets a photo's footprint. */
+    public val cameraFov: CameraFov = CameraFov.DEFAULT,
 ) {
     init {
         require(systemId in 1..254) { "systemId must be in 1..254, was $systemId" }
@@ -82,7 +104,11 @@ public data class SimVehicleConfig(
         require(!missionStorageReadyAfter.isNegative()) { "missionStorageReadyAfter must not be negative, was $missionStorageReadyAfter" }
         require(physicsStep > Duration.ZERO && physicsStep <= 1.seconds) { "physicsStep must be in (0, 1 s], was $physicsStep" }
         streamRates.forEach { (id, hz) -> require(hz >= 0 && hz <= 1000) { "stream rate for message $id must be in [0, 1000] Hz, was $hz" } }
+        require(objects.map { it.id }.toSet().size == objects.size) { "objects must have distinct ids" }
     }
+
+    /** Where it boots: [home], standing on the [terrain] when there is one. */
+    internal val bootLocation: Location get() = terrain?.let { home.copy(altitude = it.elevationAt(home)) } ?: home
 
     public companion object {
         /** Near the Faculty of Engineering in Porto, where Dolphin was written. */
@@ -116,7 +142,10 @@ public data class SimVehicleConfig(
 
         /**
          * PX4's streams unasked: SYS_STATUS, GPS_RAW_INT, EXTENDED_SYS_STATE, MISSION_CURRENT 1 Hz;
-         * GLOBAL_POSITION_INT, ATTITUDE, VFR_HUD 2 Hz; HOME_POSITION 0.2 Hz.
+         * GLOBAL_POSITION_INT, ATTITUDE, VFR_HUD 2 Hz; HOME_POSITION 0.2 Hz; DISTANCE_SENSOR 0.5 Hz,
+         * which carries something only when a distance sensor publishes (MAVLINK_MODE_NORMAL in
+         * configure_streams_to_default; streams/DISTANCE_SENSOR.hpp sends one message per updated
+         * distance_sensor topic, none without a sensor).
          */
         public val DEFAULT_STREAM_RATES: Map<Int, Double> = mapOf(
             MessageIds.SYS_STATUS to 1.0,
@@ -127,6 +156,7 @@ public data class SimVehicleConfig(
             MessageIds.EXTENDED_SYS_STATE to 1.0,
             MessageIds.VFR_HUD to 2.0,
             MessageIds.MISSION_CURRENT to 1.0,
+            MessageIds.DISTANCE_SENSOR to 0.5,
         )
     }
 }

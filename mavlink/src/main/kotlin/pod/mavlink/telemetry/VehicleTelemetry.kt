@@ -1,6 +1,8 @@
 package pod.mavlink.telemetry
 
 import io.dronefleet.mavlink.common.Attitude as AttitudeMessage
+import io.dronefleet.mavlink.common.CameraImageCaptured
+import io.dronefleet.mavlink.common.DistanceSensor
 import io.dronefleet.mavlink.common.ExtendedSysState
 import io.dronefleet.mavlink.common.GlobalPositionInt
 import io.dronefleet.mavlink.common.GpsRawInt
@@ -16,6 +18,7 @@ import kotlinx.coroutines.flow.SharedFlow
 import kotlinx.coroutines.flow.asSharedFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
+import pod.core.units.Distance
 import pod.core.units.Location
 import pod.core.units.deg
 import pod.core.units.m
@@ -45,7 +48,9 @@ public class VehicleTelemetry internal constructor() {
     private val _systemStatus = MutableStateFlow(0)
     private val _linkQuality = MutableStateFlow(LinkQuality(0, 0))
     private val _missionCurrent = MutableStateFlow<Int?>(null)
+    private val _rangefinder = MutableStateFlow<Distance?>(null)
     private val _itemReached = MutableSharedFlow<Int>(extraBufferCapacity = 256, onBufferOverflow = BufferOverflow.DROP_OLDEST)
+    private val _imagesCaptured = MutableSharedFlow<CapturedImage>(extraBufferCapacity = 256, onBufferOverflow = BufferOverflow.DROP_OLDEST)
 
     /** Global position, relative altitude, heading and velocity (GLOBAL_POSITION_INT). */
     public val position: StateFlow<Position?> = _position.asStateFlow()
@@ -80,8 +85,23 @@ public class VehicleTelemetry internal constructor() {
     /** The mission item the vehicle is flying or will fly next (MISSION_CURRENT). */
     public val missionCurrent: StateFlow<Int?> = _missionCurrent.asStateFlow()
 
+    /**
+     * Height above the ground from a downward rangefinder (DISTANCE_SENSOR with orientation
+     * MAV_SENSOR_ROTATION_PITCH_270): null until one reports, and null while its latest reading
+     * lies outside the sensor's own min..max distance (beyond max, ArduPilot's lidar drivers report
+     * max + 1 m: "nothing in range", not a height). Sensors facing any other way are ignored.
+     */
+    public val rangefinder: StateFlow<Distance?> = _rangefinder.asStateFlow()
+
     /** Each mission item the vehicle reports reached (MISSION_ITEM_REACHED), as it happens. */
     public val itemReached: SharedFlow<Int> = _itemReached.asSharedFlow()
+
+    /**
+     * Each photo the autopilot reports taken (CAMERA_IMAGE_CAPTURED from the autopilot's own
+     * component, as ArduPilot's AP_Camera sends it), as it happens. Pod's simulator puts what a
+     * photo detected in [CapturedImage.fileUrl] (see pod.sim.SimDetections).
+     */
+    public val imagesCaptured: SharedFlow<CapturedImage> = _imagesCaptured.asSharedFlow()
 
     internal fun onHeartbeat(identity: VehicleIdentity, heartbeat: Heartbeat) {
         _mode.value = FlightModes.decode(identity.autopilot, identity.type, heartbeat.customMode())
@@ -124,6 +144,23 @@ public class VehicleTelemetry internal constructor() {
                 LandedState.entries.getOrElse(message.landedState().value()) { LandedState.UNDEFINED }
             is MissionCurrent -> _missionCurrent.value = message.seq()
             is MissionItemReached -> _itemReached.tryEmit(message.seq())
+            is CameraImageCaptured -> {
+                val lat = message.lat() / 1e7
+                val lon = message.lon() / 1e7
+                if (lat !in -90.0..90.0 || lon !in -180.0..180.0) return false
+                _imagesCaptured.tryEmit(
+                    CapturedImage(
+                        imageIndex = message.imageIndex(), timeBootMs = message.timeBootMs(),
+                        location = Location(lat, lon, (message.alt() / 1000.0).m), relativeAltitude = (message.relativeAlt() / 1000.0).m,
+                        success = message.captureResult() == 1, fileUrl = message.fileUrl() ?: "",
+                    ),
+                )
+            }
+            is DistanceSensor -> {
+                if (message.orientation().value() != MAV_SENSOR_ROTATION_PITCH_270) return true
+                val cm = message.currentDistance()
+                _rangefinder.value = if (cm in message.minDistance()..message.maxDistance()) (cm / 100.0).m else null
+            }
             is GpsRawInt -> _gps.value = GpsStatus(
                 fixType = message.fixType().value(),
                 satellites = message.satellitesVisible().takeIf { it != UNKNOWN_U8 },
@@ -140,5 +177,7 @@ public class VehicleTelemetry internal constructor() {
         const val MAV_MODE_FLAG_SAFETY_ARMED = 128
         const val UNKNOWN_U16 = 65535
         const val UNKNOWN_U8 = 255
+        /** MAV_SENSOR_ORIENTATION: facing down. */
+        const val MAV_SENSOR_ROTATION_PITCH_270 = 25
     }
 }

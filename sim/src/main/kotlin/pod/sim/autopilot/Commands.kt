@@ -68,6 +68,7 @@ internal class Commands(private val ap: SimAutopilot) {
             DO_CHANGE_SPEED -> if (!ap.isPx4 && cmd.param2 <= 0f) DENIED else changeSpeed(cmd.param1.toInt(), cmd.param2.toDouble())
             DO_SET_HOME -> setHome(cmd)
             PREFLIGHT_CALIBRATION -> calibrate(cmd)
+            in CameraCommands.HANDLED -> CameraCommands.handle(ap, cmd)
             else -> UNSUPPORTED
         }
         ack(cmd, result, 0)

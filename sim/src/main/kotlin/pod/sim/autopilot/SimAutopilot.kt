@@ -20,6 +20,9 @@ import pod.sim.flight.Performance
 import pod.sim.flight.atAltitude
 import pod.sim.flight.horizontalDistance
 import pod.sim.flight.moved
+import pod.sim.world.SimWorld
+import pod.core.units.deg
+import pod.core.units.m
 import kotlin.math.cos
 import kotlin.math.sin
 
@@ -40,6 +43,8 @@ internal class SimAutopilot(
     private val readyAfter: Double = 2.0,
     /** Simulated seconds after boot before the sensors pass the pre-arm checks (never before [readyAfter] matters). */
     private val sensorsReadyAfter: Double = readyAfter,
+    /** The ground under it and the objects its camera sees: flat at [home]'s altitude unless given. */
+    val world: SimWorld = SimWorld(home.altitude.meters),
 ) {
     val multirotor: Boolean = type.isMultirotor || type == VehicleType.OTHER
     val isPx4: Boolean get() = autopilot == Autopilot.PX4
@@ -49,7 +54,9 @@ internal class SimAutopilot(
     val paramService = ParamService(this)
     val mission = MissionRunner(this)
     val camera = Camera()
-    val ground: Double = home.altitude.meters
+
+    /** Elevation AMSL in metres of the ground straight below the vehicle (the terrain's, or flat). */
+    val ground: Double get() = world.groundAt(body.location)
 
     var time = 0.0; private set
     var body = Body(home, heading = 0.0); internal set
@@ -111,7 +118,7 @@ internal class SimAutopilot(
         headingDeg = body.heading, charge = charge, armed = armed, landedState = landedState(),
         customMode = FlightModes.customMode(autopilot, type, modeName) ?: 0, modeName = modeName,
         airspeed = body.airspeed, throttle = body.throttle, missionCurrent = missionServer.current, positionReady = positionReady,
-        target = target(),
+        target = target(), groundAltitude = ground.m,
     )
 
     private fun target(): Location? = when (val a = activity) {
@@ -197,7 +204,8 @@ internal class SimAutopilot(
         val guidance = guidance()
         body = airframe.step(body, guidance, performance(), ground, armed, dt)
         afterStep()
-        for (photo in camera.step(time, body.location, if (activity == Activity.Mission) missionServer.current else null)) {
+        for (shot in camera.step(time, body.location, if (activity == Activity.Mission) missionServer.current else null)) {
+            val photo = shot.copy(heading = body.heading.deg, heightAboveGround = (body.location.altitude.meters - ground).m, detected = world.detect(body.location, body.heading))
             photos += photo
             emit(SimOutput.Photo(photo))
         }
