@@ -1,0 +1,66 @@
+package pod.e2e
+
+import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.collections.shouldNotBeEmpty
+import io.kotest.matchers.doubles.shouldBeLessThan
+import io.kotest.matchers.shouldBe
+import pod.core.survey.CameraTrigger
+import pod.core.survey.PolygonSurvey
+import pod.core.survey.SurveySpacing
+import pod.core.units.m
+import pod.core.vehicle.Autopilot
+import pod.core.vehicle.LandedState
+import pod.mavlink.workflow.Forward
+import pod.mavlink.workflow.SurveyWorkflow
+import pod.mavlink.workflow.takePhoto
+import pod.sim.SimDetections
+import pod.sim.SimVehicleConfig
+import pod.sim.world.SimObject
+
+/**
+ * The I-Seed workflow on simulated drones with seeded objects: a forward pass photographs every
+ * waypoint of a polygon survey, its detections are the seeded objects in each photo's footprint,
+ * the backward pass revisits exactly the waypoints that saw something, and the vehicle ends landed
+ * at home.
+ */
+class SurveyWorkflowSpec : StringSpec({
+
+    for (autopilot in listOf(Autopilot.ARDUPILOT, Autopilot.PX4)) {
+        "$autopilot copter: forward photos detect the seeded objects, the backward pass revisits exactly the flagged waypoints, and it lands at home" {
+            val home = SimVehicleConfig.DEFAULT_HOME
+            val objects = SimObject.scatter(seed = 5, count = 6, center = home.offset(70.m, 60.m), radius = 60.m)
+            val config = SimVehicleConfig(systemId = 91, autopilot = autopilot, objects = objects)
+            virtualRun(seed = 19) { flying(config) { v, sim ->
+                Flights.keepArmedOnGround(v)
+                v.action.arm()
+                v.action.takeoff(30.m)
+                val corners = listOf(0 to 0, 0 to 120, 140 to 120, 140 to 0).map { (n, e) -> home.offset(n.m, e.m) }
+                val plan = PolygonSurvey.plan(corners, 30.m, SurveySpacing.Direct(40.m, 30.m), trigger = CameraTrigger.PER_WAYPOINT, start = v.telemetry.position.value!!.location)
+                val revisited = mutableListOf<Int>()
+                val run = SurveyWorkflow(v).run(
+                    plan,
+                    forward = { visit ->
+                        val image = visit.takePhoto()
+                        val seen = SimDetections.parse(image.fileUrl)!!.ids
+                        Forward(flagged = seen.isNotEmpty(), value = seen)
+                    },
+                    backward = { visit -> revisited += visit.index; "measured" },
+                )
+
+                val photoWaypoints = plan.waypoints.indices.filter { plan.waypoints[it].photo }
+                run.forward.map { it.index } shouldBe photoWaypoints
+                // What the ground learnt is what the simulated camera saw, photo by photo.
+                val truth = sim.photos.value.map { photo -> photo.detected.map { it.id }.sorted() }
+                run.forward.map { it.result!!.value.sorted() } shouldBe truth
+                val flagged = run.forward.filter { it.result!!.flagged }.map { it.index }
+                flagged.shouldNotBeEmpty()
+                run.backward.map { it.first }.sorted() shouldBe flagged.sorted()
+                run.backward.forEach { it.second.result shouldBe "measured" }
+                revisited.size shouldBe flagged.size
+                (flagged.size < photoWaypoints.size) shouldBe true // some photos saw nothing: the backward pass is a real subset
+                v.telemetry.landedState.value shouldBe LandedState.ON_GROUND
+                v.telemetry.position.value!!.location.copy(altitude = home.altitude).distanceTo(home.copy(altitude = home.altitude)).meters shouldBeLessThan 3.0
+            } }
+        }
+    }
+})
