@@ -2,6 +2,7 @@ package pod.e2e
 
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.collections.shouldNotBeEmpty
+import io.kotest.matchers.doubles.shouldBeGreaterThan
 import io.kotest.matchers.doubles.shouldBeLessThan
 import io.kotest.matchers.shouldBe
 import pod.core.survey.CameraTrigger
@@ -10,12 +11,16 @@ import pod.core.survey.SurveySpacing
 import pod.core.units.m
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.LandedState
+import pod.core.workflow.AltitudeCorrection
 import pod.mavlink.workflow.Forward
 import pod.mavlink.workflow.SurveyWorkflow
 import pod.mavlink.workflow.takePhoto
 import pod.sim.SimDetections
 import pod.sim.SimVehicleConfig
+import pod.sim.world.Hill
+import pod.sim.world.Rangefinder
 import pod.sim.world.SimObject
+import pod.sim.world.Terrain
 
 /**
  * The I-Seed workflow on simulated drones with seeded objects: a forward pass photographs every
@@ -60,6 +65,34 @@ class SurveyWorkflowSpec : StringSpec({
                 (flagged.size < photoWaypoints.size) shouldBe true // some photos saw nothing: the backward pass is a real subset
                 v.telemetry.landedState.value shouldBe LandedState.ON_GROUND
                 v.telemetry.position.value!!.location.copy(altitude = home.altitude).distanceTo(home.copy(altitude = home.altitude)).meters shouldBeLessThan 3.0
+            } }
+        }
+    }
+
+    for (autopilot in listOf(Autopilot.ARDUPILOT, Autopilot.PX4)) {
+        "$autopilot copter: over a hill the rangefinder's readings raise the remaining waypoints, so every photo is taken at the survey's height above the ground" {
+            val home = SimVehicleConfig.DEFAULT_HOME
+            val hill = Hill(north = 70.m, east = 60.m, height = 14.m, radius = 35.m)
+            val terrain = Terrain(origin = home, hills = listOf(hill))
+            val config = SimVehicleConfig(systemId = 92, autopilot = autopilot, terrain = terrain, rangefinder = Rangefinder())
+            virtualRun(seed = 20) { flying(config) { v, sim ->
+                Flights.keepArmedOnGround(v)
+                v.action.arm()
+                v.action.takeoff(30.m)
+                val corners = listOf(0 to 0, 0 to 120, 140 to 120, 140 to 0).map { (n, e) -> home.offset(n.m, e.m) }
+                val plan = PolygonSurvey.plan(corners, 30.m, SurveySpacing.Direct(40.m, 30.m), trigger = CameraTrigger.PER_WAYPOINT, start = v.telemetry.position.value!!.location)
+                val correction = AltitudeCorrection(target = 30.m, tolerance = 2.m, minimum = 10.m, maximum = 80.m)
+                val run = SurveyWorkflow(v, altitudeCorrection = correction).run(
+                    plan,
+                    forward = { _ -> Forward(flagged = false, value = sim.state.value.heightAboveGround.meters) },
+                    backward = { _ -> Unit },
+                )
+                run.backward shouldBe emptyList()
+                val rise = run.forward.map { r -> terrain.elevationAt(r.point).meters - home.altitude.meters }
+                rise.max() shouldBeGreaterThan 8.0 // some photos are over the hill
+                run.forward.forEach { r -> kotlin.math.abs(r.result!!.value - 30.0) shouldBeLessThan 4.0 }
+                run.forward.maxOf { it.altitudeOffset.meters } shouldBeGreaterThan 5.0
+                v.telemetry.landedState.value shouldBe LandedState.ON_GROUND
             } }
         }
     }

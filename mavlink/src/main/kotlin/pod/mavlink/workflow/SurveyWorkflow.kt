@@ -7,6 +7,7 @@ import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.withTimeout
 import pod.core.survey.SurveyPlan
 import pod.core.vehicle.VehicleType
+import pod.core.workflow.AltitudeCorrection
 import pod.core.workflow.BackwardRoute
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.command.MavCommands
@@ -36,6 +37,8 @@ public class SurveyWorkflow(
     private val onFailure: OnFailure = OnFailure.Skip,
     /** How long the flight home may take. */
     private val homeTimeout: Duration = 15.minutes,
+    /** Keeps the forward pass at its height above the ground from the rangefinder, or null. */
+    private val altitudeCorrection: AltitudeCorrection? = null,
 ) {
     /** Flies both passes over [plan] and home; returns what each pass recorded. */
     public suspend fun <F, B> run(
@@ -45,7 +48,7 @@ public class SurveyWorkflow(
     ): SurveyRun<F, B> {
         val points = plan.waypoints.map { it.location }
         val flight = WaypointFlight(vehicle, config, timeScale)
-        val forwardRecords = flight.fly(points, Stop(at = { plan.waypoints[it].photo }, timeout = actionTimeout, onFailure = onFailure, action = forward))
+        val forwardRecords = flight.fly(points, Stop(at = { plan.waypoints[it].photo }, timeout = actionTimeout, onFailure = onFailure, action = forward), altitudeCorrection)
             .filter { plan.waypoints[it.index].photo }
         val flagged = forwardRecords.filter { it.result?.flagged == true }.map { it.index }
         val backwardRecords = if (flagged.isEmpty()) {
@@ -53,7 +56,9 @@ public class SurveyWorkflow(
         } else {
             val here = vehicle.telemetry.position.value?.location ?: points[flagged.first()]
             val order = BackwardRoute.order(here, flagged.map { points[it] }).map { flagged[it] }
-            flight.fly(order.map { points[it] }, Stop(timeout = actionTimeout, onFailure = onFailure, action = backward))
+            // Each flagged waypoint at the altitude the forward pass found right there.
+            val corrected = order.map { i -> points[i].let { it.copy(altitude = it.altitude + forwardRecords.first { r -> r.index == i }.altitudeOffset) } }
+            flight.fly(corrected, Stop(timeout = actionTimeout, onFailure = onFailure, action = backward))
                 .map { record -> order[record.index] to record }
         }
         vehicle.action.returnToLaunch()

@@ -4,7 +4,10 @@ import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.TimeoutCancellationException
 import kotlinx.coroutines.async
 import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.filterNotNull
 import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.launch
 import kotlinx.coroutines.withTimeout
 import pod.core.PodException
 import pod.core.queue.MissionQueue
@@ -12,11 +15,15 @@ import pod.core.queue.QueueElement
 import pod.core.queue.QueuePattern
 import pod.core.queue.QueuePoint
 import pod.core.queue.WhenEmpty
+import pod.core.units.Distance
 import pod.core.units.Location
+import pod.core.workflow.AltitudeCorrection
+import pod.mavlink.MessageIds
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.queue.QueueFlight
 import pod.mavlink.queue.QueueFlightConfig
 import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 
 /**
@@ -45,29 +52,62 @@ public class WaypointFlight(
      * Flies [waypoints] (altitudes above home) in order and returns a record per waypoint; [stop]
      * says where to stop and what to run there.
      */
-    public suspend fun <R> fly(waypoints: List<Location>, stop: Stop<R>): List<WaypointRecord<R>> = coroutineScope {
+    public suspend fun <R> fly(waypoints: List<Location>, stop: Stop<R>, correction: AltitudeCorrection? = null): List<WaypointRecord<R>> = coroutineScope {
         require(waypoints.isNotEmpty()) { "give at least one waypoint" }
         val queue = MissionQueue(vehicle.clock, timeScale)
         val flight = async { QueueFlight(vehicle, queue, config).fly(WhenEmpty.WAIT) }
+        // Written by the correction's collector, read by this loop: thread-safe holders.
+        val offset = MutableStateFlow(Distance.ZERO)
+        val flyingTo = MutableStateFlow<Int?>(null)
+        fun goto(index: Int) = QueueElement(
+            QueuePattern.Goto(QueuePoint.Global(waypoints[index])),
+            altitude = (waypoints[index].altitude + offset.value).takeIf { it.meters > 0 },
+        )
+        val correcting = correction?.let { c -> launch { correct(c, queue) { change ->
+            offset.value += change
+            // The waypoint being flown to moves too; the ones after take the offset when appended.
+            flyingTo.value?.let { i -> if (!queue.state.value.isEmpty) queue.replaceCurrent(goto(i)) }
+        } } }
         try {
-            waypoints.mapIndexed { index, point ->
-                val entry = queue.append(QueueElement(QueuePattern.Goto(QueuePoint.Global(point)), altitude = point.altitude.takeIf { it.meters > 0 }))
-                // Reached: the goto ended. A flight that fails (a refusal, a lost vehicle) cancels this
-                // scope and its failure is what fly() throws.
-                queue.state.first { state -> state.current?.id != entry.id && state.pending.none { it.id == entry.id } }
+            waypoints.indices.map { index ->
+                flyingTo.value = index
+                queue.append(goto(index))
+                // Reached: the queue ran empty (one goto at a time; a corrected altitude replaces it).
+                // A flight that fails (a refusal, a lost vehicle) cancels this scope, and its
+                // failure is what fly() throws.
+                queue.state.first { it.isEmpty }
+                flyingTo.value = null
                 val reached = queue.now()
                 var began: Duration? = null
                 val outcome = if (stop.at(index)) {
                     settle()
                     began = queue.now()
-                    act(index, point, stop)
+                    act(index, waypoints[index], stop)
                 } else {
                     null
                 }
-                WaypointRecord(index, point, reached, began, queue.now(), outcome?.first, outcome?.second ?: 0)
+                WaypointRecord(index, waypoints[index], reached, began, queue.now(), outcome?.first, outcome?.second ?: 0, offset.value)
             }
         } finally {
+            correcting?.cancel()
             flight.cancel()
+        }
+    }
+
+    /**
+     * Feeds the rangefinder's readings to [correction] (asking the vehicle for them first: ArduPilot
+     * streams DISTANCE_SENSOR only when asked) and passes on each change it decides.
+     */
+    private suspend fun correct(correction: AltitudeCorrection, queue: MissionQueue, apply: (Distance) -> Unit) {
+        try {
+            vehicle.action.setMessageInterval(MessageIds.DISTANCE_SENSOR, 200.milliseconds)
+        } catch (e: PodException) {
+            // A vehicle that will not stream it may send it anyway (PX4 does, at 0.5 Hz); go on.
+        }
+        vehicle.telemetry.rangefinder.filterNotNull().collect { measured ->
+            val altitude = vehicle.telemetry.position.value?.relativeAltitude ?: return@collect
+            if (queue.state.value.isEmpty) return@collect // holding for an action: measure while flying
+            correction.reading(measured, altitude)?.let(apply)
         }
     }
 
@@ -164,6 +204,8 @@ public data class WaypointRecord<R>(
     val left: Duration,
     val result: R?,
     val tries: Int,
+    /** The altitude correction in force when it was left (zero without one). */
+    val altitudeOffset: Distance = Distance.ZERO,
 )
 
 /** The action at waypoint [index] failed [tries] times (its last failure is the cause). */
