@@ -36,11 +36,7 @@ class SurveyWorkflowSpec : StringSpec({
             val objects = SimObject.scatter(seed = 5, count = 6, center = home.offset(70.m, 60.m), radius = 60.m)
             val config = SimVehicleConfig(systemId = 91, autopilot = autopilot, objects = objects)
             virtualRun(seed = 19) { flying(config) { v, sim ->
-                Flights.keepArmedOnGround(v)
-                v.action.arm()
-                v.action.takeoff(30.m)
-                val corners = listOf(0 to 0, 0 to 120, 140 to 120, 140 to 0).map { (n, e) -> home.offset(n.m, e.m) }
-                val plan = PolygonSurvey.plan(corners, 30.m, SurveySpacing.Direct(40.m, 30.m), trigger = CameraTrigger.PER_WAYPOINT, start = v.telemetry.position.value!!.location)
+                val plan = upAndPlanned(v, home)
                 val revisited = mutableListOf<Int>()
                 val run = SurveyWorkflow(v).run(
                     plan,
@@ -76,11 +72,7 @@ class SurveyWorkflowSpec : StringSpec({
             val terrain = Terrain(origin = home, hills = listOf(hill))
             val config = SimVehicleConfig(systemId = 92, autopilot = autopilot, terrain = terrain, rangefinder = Rangefinder())
             virtualRun(seed = 20) { flying(config) { v, sim ->
-                Flights.keepArmedOnGround(v)
-                v.action.arm()
-                v.action.takeoff(30.m)
-                val corners = listOf(0 to 0, 0 to 120, 140 to 120, 140 to 0).map { (n, e) -> home.offset(n.m, e.m) }
-                val plan = PolygonSurvey.plan(corners, 30.m, SurveySpacing.Direct(40.m, 30.m), trigger = CameraTrigger.PER_WAYPOINT, start = v.telemetry.position.value!!.location)
+                val plan = upAndPlanned(v, home)
                 val correction = AltitudeCorrection(target = 30.m, tolerance = 2.m, minimum = 10.m, maximum = 80.m)
                 val run = SurveyWorkflow(v, altitudeCorrection = correction).run(
                     plan,
@@ -96,4 +88,15 @@ class SurveyWorkflowSpec : StringSpec({
             } }
         }
     }
-})
+}) {
+    private companion object {
+        /** Takes [v] up to 30 m and plans a photo survey of a 140 × 120 m area north-east of [home], entered nearest the vehicle. */
+        suspend fun upAndPlanned(v: pod.mavlink.MavlinkVehicle, home: pod.core.units.Location): pod.core.survey.SurveyPlan {
+            Flights.keepArmedOnGround(v)
+            v.action.arm()
+            v.action.takeoff(30.m)
+            val corners = listOf(0 to 0, 0 to 120, 140 to 120, 140 to 0).map { (n, e) -> home.offset(n.m, e.m) }
+            return PolygonSurvey.plan(corners, 30.m, SurveySpacing.Direct(40.m, 30.m), trigger = CameraTrigger.PER_WAYPOINT, start = v.telemetry.position.value!!.location)
+        }
+    }
+}
