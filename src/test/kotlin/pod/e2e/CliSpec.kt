@@ -112,6 +112,13 @@ class CliSpec : StringSpec({
         Regex("<polyline").findAll(svg).count() shouldBeGreaterThanOrEqual 10 // planned and flown, 5 vehicles
     }
 
+    "pod demo cut short while the queue tour still flies ends cleanly: Listing 4 brings home only the drones it took" {
+        val out = Captured()
+        val map = kotlin.io.path.createTempFile("pod-demo-short", ".svg")
+        Pod(out).parse(listOf("demo", "--json", "--for", "5m", "--time-scale", "60", "--map", map.toString()))
+        out.events.last() shouldBe Event.DemoDone(ok = true, error = null, map = map.toString())
+    }
+
     "pod sim --json announces each vehicle it started with a started event" {
         val out = Captured()
         val port = freePort()

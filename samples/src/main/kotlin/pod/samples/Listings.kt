@@ -120,17 +120,20 @@ suspend fun Program.listing4(
     lowBattery: Double = 0.3,
 ): Unit {
     message("listing 4: keeping $airborne vehicles on survey for $duration")
-    val slots = (1..airborne).map { slot -> action("slot $slot") { keepOnSurvey(slot, charged, lowBattery) } }
+    // The vehicles this listing took: only those are its to bring home (another program, such as
+    // the demo's queue tour, may be flying others).
+    val taken: MutableSet<Int> = java.util.concurrent.ConcurrentHashMap.newKeySet()
+    val slots = (1..airborne).map { slot -> action("slot $slot") { keepOnSurvey(slot, charged, lowBattery, taken) } }
     execute(concurrently(slots) during duration)
-    val out = vehicles.filter(::isOut)
+    val out = vehicles.filter { it.id in taken && isOut(it) }
     if (out.isNotEmpty()) {
         message("listing 4: time is up; bringing ${out.joinToString { it.name }} home")
         execute(concurrently(out.map { landAtHome(it) on it }))
     }
 }
 
-private suspend fun Program.keepOnSurvey(slot: Int, charged: Double, lowBattery: Double) {
-    var v = pick { count(1); battery(atLeast = charged); timeout(2.hours) }[0]
+private suspend fun Program.keepOnSurvey(slot: Int, charged: Double, lowBattery: Double, taken: MutableSet<Int>) {
+    var v = pick { count(1); battery(atLeast = charged); timeout(2.hours) }[0].also { taken += it.id }
     var homeward: Task? = null
     while (true) {
         message("slot $slot: ${v.name} takes the survey (battery ${percent(battery(v))})")
@@ -146,7 +149,7 @@ private suspend fun Program.keepOnSurvey(slot: Int, charged: Double, lowBattery:
             release(current)
         }
         val next = try {
-            pick { count(1); battery(atLeast = charged); timeout(5.seconds) }[0]
+            pick { count(1); battery(atLeast = charged); timeout(5.seconds) }[0].also { taken += it.id }
         } catch (e: PickTimeout) {
             null
         }
@@ -154,7 +157,7 @@ private suspend fun Program.keepOnSurvey(slot: Int, charged: Double, lowBattery:
         if (next == null) {
             execute(homeward)
             homeward = null
-            v = pick { count(1); battery(atLeast = charged); timeout(2.hours) }[0]
+            v = pick { count(1); battery(atLeast = charged); timeout(2.hours) }[0].also { taken += it.id }
         } else {
             v = next
         }
