@@ -30,8 +30,9 @@ public class MissionControl<P>(initial: ControlState<P> = ControlState(ControlPh
     /** The event id for the operator's next command: one more than any issued or seen so far. */
     public fun nextEventId(): Long {
         while (true) {
-            val last = maxOf(issued.value, _state.value.eventId)
-            if (issued.compareAndSet(issued.value, last + 1)) return last + 1
+            val seen = issued.value
+            val next = maxOf(seen, _state.value.eventId) + 1
+            if (issued.compareAndSet(seen, next)) return next
         }
     }
 

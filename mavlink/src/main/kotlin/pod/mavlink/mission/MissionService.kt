@@ -172,7 +172,8 @@ public class MissionService internal constructor(
      * naming [seq], which cannot tell an answer from the vehicle's periodic report when [seq] is
      * already current: a lost request would look confirmed and an item rewritten by an upload would
      * never be restarted. So that case goes as MAV_CMD_DO_SET_MISSION_CURRENT, which the vehicle
-     * acknowledges (ArduPilot 4.3+, PX4 1.14+); a vehicle that does not know it gets MISSION_SET_CURRENT.
+     * acknowledges (ArduPilot: GCS_MAVLINK::handle_command_do_set_mission_current, which calls the same
+     * AP_Mission::set_current_cmd); a vehicle that answers UNSUPPORTED gets MISSION_SET_CURRENT.
      */
     public suspend fun setCurrent(seq: Int) {
         require(seq >= 0) { "seq must be ≥ 0, was $seq" }
