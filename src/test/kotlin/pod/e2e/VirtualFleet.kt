@@ -74,8 +74,10 @@ internal class VirtualFleet(
         flavors: List<SimFlavor>,
         onEvent: (EngineEvent) -> Unit = {},
         station: GroundStationConfig = GroundStationConfig(),
+        configure: (SimVehicleConfig) -> SimVehicleConfig = { it },
         program: suspend Program.(SimPlatform) -> T,
-    ): Pair<T, SimRecord> = simulate(flavors, timeScale = 1.0, onEvent = onEvent, timebase = timebase, openLink = openLink, station = station, program = program)
+    ): Pair<T, SimRecord> =
+        simulate(flavors, timeScale = 1.0, onEvent = onEvent, timebase = timebase, openLink = openLink, station = station, configure = configure, program = program)
 
     /** A started [SimPlatform] of [flavors] on this world (see [SimPlatform.start]). */
     suspend fun platform(scope: CoroutineScope, flavors: List<SimFlavor>): SimPlatform =

@@ -13,6 +13,7 @@ import pod.launch.map.Tracks
 import pod.sim.LinkOpener
 import pod.sim.SimFlavor
 import pod.sim.SimPlatform
+import pod.sim.SimVehicleConfig
 import java.nio.file.Path
 import kotlin.io.path.writeText
 
@@ -37,6 +38,9 @@ public class SimRecord(
  * (`LinkOpener.memory(network)`) and a [timeScale] of 1, the whole run is in virtual time,
  * deterministic, with no real-time deadline. Call it from a coroutine on [timebase]'s dispatcher.
  * [station] configures the fleet's ground station (a longer `lostAfter` for a lossy link, say).
+ * [configure] adjusts each vehicle's configuration before it starts, as in [SimPlatform.start]:
+ * `{ it.copy(terrain = hills, rangefinder = Rangefinder(), objects = seeded) }` gives every vehicle
+ * the same terrain, a rangefinder and the objects its photos detect; the default changes nothing.
  */
 public suspend fun <T> simulate(
     flavors: List<SimFlavor>,
@@ -47,9 +51,10 @@ public suspend fun <T> simulate(
     timebase: Timebase = Timebase.System,
     openLink: LinkOpener = LinkOpener.Udp,
     station: GroundStationConfig = GroundStationConfig(),
+    configure: (SimVehicleConfig) -> SimVehicleConfig = { it },
     program: suspend Program.(SimPlatform) -> T,
 ): Pair<T, SimRecord> = coroutineScope {
-    val sim = SimPlatform.start(this, flavors, timeScale, timebase = timebase, openLink = openLink, station = station)
+    val sim = SimPlatform.start(this, flavors, timeScale, timebase = timebase, openLink = openLink, station = station, configure = configure)
     try {
         val names = sim.platform.vehicles.value.associate { it.id to it.name }
         val events = mutableListOf<EngineEvent>()

@@ -2,78 +2,207 @@ package pod.launch.map
 
 import pod.core.mission.Mission
 import pod.core.mission.MissionStep
+import pod.core.survey.SurveyPlan
+import pod.core.survey.SurveyWaypoint
 import pod.core.units.Location
-import kotlin.math.cos
+import pod.launch.map.MapFrame.Companion.fmt
 import kotlin.math.max
 
 /**
- * Draws planned missions (dashed, with a dot per step) and flown tracks (solid) on one SVG map,
- * north up, with a 100 m scale bar. Coordinates are projected flat around the first point, which
- * is exact enough over the few kilometres a demo flies.
+ * Draws on one SVG map, north up, with a scale bar and a legend: planned missions (dashed, a dot
+ * per step) and flown tracks (solid), one colour per vehicle; and a survey's layers — its polygon,
+ * the forward path (photographed track legs solid, turnaround and transit legs dotted, a dot per
+ * photo waypoint), the waypoints that detected something (rings), objects on the ground (crosses)
+ * and the backward path (numbered in the order flown). The canvas is fitted to everything drawn.
+ *
+ * Each layer is an SVG group whose id names it (`survey-area`, `forward-path`, `photo-waypoints`,
+ * `planned`, `flown`, `objects`, `detections`, `backward-path`, `legend`), so a reader or a test can
+ * pick it out; the legend's entries name the layer they explain in `data-layer`.
  */
-internal class SvgMap(private val width: Int = 900, private val height: Int = 700) {
-    private class Line(val label: String, val points: List<Location>, val colour: String, val planned: Boolean)
+internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: Int = 700) {
+    private class Line(val vehicleId: Int, val label: String, val points: List<Location>, val planned: Boolean)
 
     private val lines = mutableListOf<Line>()
+    private val vehicleNames = sortedMapOf<Int, String>()
+    private var area: List<Location> = emptyList()
+    private var forward: List<SurveyWaypoint> = emptyList()
+    private var detections: List<Pair<Int, Location>> = emptyList()
+    private var objects: List<Location> = emptyList()
+    private var backward: List<Pair<Int, Location>> = emptyList()
 
     /** Adds [mission]'s path as planned for vehicle [vehicleId]. */
     internal fun planned(vehicleId: Int, mission: Mission) {
         val points = mission.steps.filterIsInstance<MissionStep.Navigation>().map { it.location }
-        if (points.isNotEmpty()) lines += Line(mission.name, points, colour(vehicleId), planned = true)
+        if (points.isNotEmpty()) lines += Line(vehicleId, mission.name, points, planned = true)
     }
 
-    /** Adds a flown track of vehicle [vehicleId]. */
+    /** Adds a flown track of vehicle [vehicleId], called [name]. */
     internal fun flown(vehicleId: Int, name: String, points: List<Location>) {
-        if (points.size >= 2) lines += Line(name, points, colour(vehicleId), planned = false)
+        if (points.size >= 2) {
+            lines += Line(vehicleId, name, points, planned = false)
+            vehicleNames[vehicleId] = name
+        }
+    }
+
+    /** Sets the surveyed polygon (its vertices, not closed). */
+    internal fun surveyArea(polygon: List<Location>) {
+        area = polygon
+    }
+
+    /** Sets the forward path: [plan]'s waypoints in flying order. */
+    internal fun forwardPath(plan: SurveyPlan) {
+        forward = plan.waypoints
+    }
+
+    /** Marks the waypoints of [plan] at [indices] as having detected something. */
+    internal fun detections(plan: SurveyPlan, indices: List<Int>) {
+        detections = indices.map { it to plan.waypoints[it].location }
+    }
+
+    /** Sets where objects on the ground are known to lie. */
+    internal fun objects(locations: List<Location>) {
+        objects = locations
+    }
+
+    /** Sets the backward path: the waypoints of [plan] at [order], in the order flown. */
+    internal fun backwardPath(plan: SurveyPlan, order: List<Int>) {
+        backward = order.map { it to plan.waypoints[it].location }
     }
 
     /** The SVG document. */
     internal fun render(title: String): String {
-        val all = lines.flatMap { it.points }
-        val origin = all.firstOrNull() ?: Location(0.0, 0.0)
-        val xy = all.map { project(origin, it) }
-        val minX = xy.minOfOrNull { it.first } ?: 0.0
-        val maxX = xy.maxOfOrNull { it.first } ?: 1.0
-        val minY = xy.minOfOrNull { it.second } ?: 0.0
-        val maxY = xy.maxOfOrNull { it.second } ?: 1.0
-        val margin = 40.0
-        val scale = minOf((width - 2 * margin) / max(maxX - minX, 1.0), (height - 2 * margin - 30) / max(maxY - minY, 1.0))
-        fun px(l: Location): String {
-            val (x, y) = project(origin, l)
-            return "%.1f,%.1f".format(margin + (x - minX) * scale, height - margin - (y - minY) * scale)
-        }
+        val legend = legendEntries()
+        val legendWidth = if (legend.isEmpty()) 0.0 else Legend.WIDTH
+        val content = area + forward.map { it.location } + lines.flatMap { it.points } + objects
+        val frame = MapFrame(content, maxWidth - 2 * MARGIN - legendWidth, maxHeight - TOP - BOTTOM)
+        val width = max(MARGIN + frame.width + MARGIN + legendWidth, MIN_WIDTH)
+        val height = max(TOP + frame.height + BOTTOM, TOP + Legend.height(legend) + MARGIN)
+        val px = { l: Location -> frame.pixel(l).let { (x, y) -> MARGIN + x to TOP + y } }
+        fun points(list: List<Location>) = list.joinToString(" ") { l -> px(l).let { (x, y) -> "${fmt(x)},${fmt(y)}" } }
         return buildString {
-            appendLine("""<svg xmlns="http://www.w3.org/2000/svg" width="$width" height="$height" viewBox="0 0 $width $height">""")
+            val w = fmt(width)
+            val h = fmt(height)
+            appendLine("""<svg xmlns="http://www.w3.org/2000/svg" width="$w" height="$h" viewBox="0 0 $w $h">""")
             appendLine("""<rect width="100%" height="100%" fill="#fbfbf8"/>""")
-            appendLine("""<text x="$margin" y="24" font-family="sans-serif" font-size="16">${escape(title)}</text>""")
-            for (line in lines) {
-                val dash = if (line.planned) """ stroke-dasharray="6 4" stroke-opacity="0.6"""" else ""
-                val widthPx = if (line.planned) 1.5 else 2.5
-                appendLine("""<polyline fill="none" stroke="${line.colour}" stroke-width="$widthPx"$dash points="${line.points.joinToString(" ") { px(it) }}"><title>${escape(line.label)}</title></polyline>""")
-                if (line.planned) line.points.forEach { p ->
-                    val (x, y) = px(p).split(',')
-                    appendLine("""<circle cx="$x" cy="$y" r="2.5" fill="${line.colour}"/>""")
-                }
+            appendLine("""<text x="${fmt(MARGIN)}" y="24" font-family="sans-serif" font-size="16">${escape(title)}</text>""")
+            if (area.isNotEmpty()) {
+                appendLine("""<g id="survey-area"><polygon points="${points(area)}" fill="$AREA" fill-opacity="0.2" stroke="$AREA" stroke-width="1.5"/></g>""")
             }
-            val bar = 100 * scale
-            appendLine("""<line x1="$margin" y1="${height - 15}" x2="${margin + bar}" y2="${height - 15}" stroke="black" stroke-width="2"/>""")
-            appendLine("""<text x="${margin + bar + 6}" y="${height - 11}" font-family="sans-serif" font-size="12">100 m</text>""")
+            if (forward.isNotEmpty()) {
+                appendLine("""<g id="forward-path">""")
+                for ((photographed, run) in legs(forward)) {
+                    val style = if (photographed) """class="track-leg" stroke-width="1.5"""" else """class="turn-leg" stroke-width="1.2" stroke-dasharray="2 3""""
+                    appendLine("""<polyline $style fill="none" stroke="$PATH" points="${points(run)}"/>""")
+                }
+                appendLine("</g>")
+                appendLine("""<g id="photo-waypoints">""")
+                forward.forEachIndexed { i, wp ->
+                    if (wp.photo) px(wp.location).let { (x, y) -> appendLine("""<circle class="photo" data-waypoint="$i" cx="${fmt(x)}" cy="${fmt(y)}" r="2.5" fill="$PATH"/>""") }
+                }
+                appendLine("</g>")
+            }
+            for ((planned, group) in listOf(true to "planned", false to "flown")) {
+                val layer = lines.filter { it.planned == planned }
+                if (layer.isEmpty()) continue
+                appendLine("""<g id="$group">""")
+                for (line in layer) {
+                    val style = if (planned) """stroke-width="1.5" stroke-dasharray="6 4" stroke-opacity="0.6"""" else """stroke-width="2.5""""
+                    val colour = colour(line.vehicleId)
+                    appendLine("""<polyline class="vehicle-${line.vehicleId}" fill="none" stroke="$colour" $style points="${points(line.points)}"><title>${escape(line.label)}</title></polyline>""")
+                    if (planned) line.points.forEach { p -> px(p).let { (x, y) -> appendLine("""<circle cx="${fmt(x)}" cy="${fmt(y)}" r="2.5" fill="$colour"/>""") } }
+                }
+                appendLine("</g>")
+            }
+            if (objects.isNotEmpty()) {
+                appendLine("""<g id="objects">""")
+                objects.forEach { o -> px(o).let { (x, y) -> appendLine(cross(x, y, OBJECT, """ class="object"""")) } }
+                appendLine("</g>")
+            }
+            if (detections.isNotEmpty()) {
+                appendLine("""<g id="detections">""")
+                for ((i, l) in detections) px(l).let { (x, y) ->
+                    appendLine("""<circle class="detection" data-waypoint="$i" cx="${fmt(x)}" cy="${fmt(y)}" r="6" fill="none" stroke="$DETECTION" stroke-width="2.5"><title>waypoint $i detected something</title></circle>""")
+                }
+                appendLine("</g>")
+            }
+            if (backward.isNotEmpty()) {
+                appendLine("""<g id="backward-path">""")
+                appendLine("""<polyline class="backward-leg" fill="none" stroke="$BACKWARD" stroke-width="2.5" points="${points(backward.map { it.second })}"/>""")
+                backward.forEachIndexed { n, (i, l) ->
+                    val (x, y) = px(l)
+                    appendLine("""<circle class="backward-stop" data-waypoint="$i" cx="${fmt(x)}" cy="${fmt(y)}" r="4" fill="$BACKWARD"/>""")
+                    appendLine("""<text class="backward-number" data-waypoint="$i" x="${fmt(x + 7)}" y="${fmt(y - 7)}" font-family="sans-serif" font-size="12" fill="$BACKWARD">${n + 1}</text>""")
+                }
+                appendLine("</g>")
+            }
+            Legend.render(this, legend, width - legendWidth, TOP)
+            val barMetres = frame.scaleBarMetres(max(frame.width * 0.4, 60.0))
+            val bar = barMetres * frame.pixelsPerMetre
+            appendLine("""<g id="scale-bar"><line x1="${fmt(MARGIN)}" y1="${fmt(height - 15)}" x2="${fmt(MARGIN + bar)}" y2="${fmt(height - 15)}" stroke="black" stroke-width="2"/>""")
+            appendLine("""<text x="${fmt(MARGIN + bar + 6)}" y="${fmt(height - 11)}" font-family="sans-serif" font-size="12">${distance(barMetres)}</text></g>""")
             appendLine("</svg>")
         }
     }
 
-    private fun project(origin: Location, p: Location): Pair<Double, Double> {
-        val metresPerDegree = 111_320.0
-        val x = (p.longitude - origin.longitude) * metresPerDegree * cos(Math.toRadians(origin.latitude))
-        val y = (p.latitude - origin.latitude) * metresPerDegree
-        return x to y
+    private fun legendEntries(): List<LegendEntry> = buildList {
+        if (area.isNotEmpty()) add(LegendEntry("survey-area", Swatch.AREA, AREA, "survey area"))
+        if (forward.isNotEmpty()) {
+            add(LegendEntry("forward-path", Swatch.SOLID, PATH, "forward path (tracks)"))
+            if (legs(forward).any { !it.first }) add(LegendEntry("forward-path", Swatch.DOTTED, PATH, "turnaround / transit legs"))
+            if (forward.any { it.photo }) add(LegendEntry("photo-waypoints", Swatch.DOT, PATH, "photo waypoint"))
+        }
+        if (lines.any { it.planned }) add(LegendEntry("planned", Swatch.DASHED, NEUTRAL, "planned mission (dashed)"))
+        if (lines.any { !it.planned }) add(LegendEntry("flown", Swatch.SOLID, NEUTRAL, "flown track (solid)"))
+        for (id in lines.map { it.vehicleId }.distinct().sorted()) {
+            add(LegendEntry("vehicle-$id", Swatch.SOLID, colour(id), vehicleNames[id] ?: "vehicle $id"))
+        }
+        if (objects.isNotEmpty()) add(LegendEntry("objects", Swatch.CROSS, OBJECT, "object on the ground"))
+        if (detections.isNotEmpty()) add(LegendEntry("detections", Swatch.RING, DETECTION, "waypoint that detected"))
+        if (backward.isNotEmpty()) add(LegendEntry("backward-path", Swatch.NUMBERED, BACKWARD, "backward path, in order"))
     }
 
-    private fun escape(text: String) = text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
-
     private companion object {
+        const val MARGIN = 30.0
+        const val TOP = 44.0
+        const val BOTTOM = 40.0
+        const val MIN_WIDTH = 360.0
+
         val PALETTE = listOf("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2")
 
+        // Survey colours stay clear of the vehicle palette, so a layer never reads as a vehicle.
+        const val AREA = "#4a90a4"
+        const val PATH = "#555555"
+        const val OBJECT = "#111111"
+        const val DETECTION = "#e6ab02"
+        const val BACKWARD = "#c51b8a"
+        const val NEUTRAL = "#777777"
+
         fun colour(vehicleId: Int) = PALETTE[(vehicleId - 1).mod(PALETTE.size)]
+
+        /**
+         * The path through [waypoints] cut into runs of legs of one kind: photographed (along a
+         * track, between its start and end) or not (turnaround extensions, transits, the turn to
+         * the next track). Neighbouring runs share their joining waypoint.
+         */
+        fun legs(waypoints: List<SurveyWaypoint>): List<Pair<Boolean, List<Location>>> {
+            val runs = mutableListOf<Pair<Boolean, MutableList<Location>>>()
+            for (i in 0 until waypoints.size - 1) {
+                val a = waypoints[i]
+                val b = waypoints[i + 1]
+                val photographed = a.onTrack() && b.onTrack() && a.track == b.track && !a.trackEnd
+                if (runs.lastOrNull()?.first != photographed) runs += photographed to mutableListOf(a.location)
+                runs.last().second += b.location
+            }
+            return runs
+        }
+
+        private fun SurveyWaypoint.onTrack() = !turnaround && !transit
+
+        fun distance(metres: Double): String = when {
+            metres >= 1000 -> "${trim(metres / 1000)} km"
+            else -> "${trim(metres)} m"
+        }
+
+        private fun trim(d: Double) = if (d == Math.rint(d)) d.toLong().toString() else d.toString()
     }
 }
