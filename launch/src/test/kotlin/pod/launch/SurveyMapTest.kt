@@ -92,6 +92,8 @@ class SurveyMapTest : StringSpec({
         val svg = parse(surveySvg(picture(), "legend"))
         val drawn = svg.all("g").map { it.getAttribute("id") }.filter { it.isNotEmpty() && it != "legend" && it != "scale-bar" }
         drawn shouldContainAll listOf("survey-area", "forward-path", "photo-waypoints", "flown", "objects", "detections", "backward-path")
+        // The flown track (which follows the plan) lies under the forward path, not over it.
+        (drawn.indexOf("flown") < drawn.indexOf("forward-path")) shouldBe true
         val entries = svg.layer("legend").all("g").filter { it.getAttribute("class") == "legend-entry" }
         entries.map { it.getAttribute("data-layer") } shouldContainAll drawn
         val vehicle = entries.single { it.getAttribute("data-layer") == "vehicle-2" }

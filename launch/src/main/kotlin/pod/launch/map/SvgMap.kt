@@ -77,8 +77,7 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
         val frame = MapFrame(content, maxWidth - 2 * MARGIN - legendWidth, maxHeight - TOP - BOTTOM)
         val width = max(MARGIN + frame.width + MARGIN + legendWidth, MIN_WIDTH)
         val height = max(TOP + frame.height + BOTTOM, TOP + Legend.height(legend) + MARGIN)
-        val px = { l: Location -> frame.pixel(l).let { (x, y) -> MARGIN + x to TOP + y } }
-        fun points(list: List<Location>) = list.joinToString(" ") { l -> px(l).let { (x, y) -> "${fmt(x)},${fmt(y)}" } }
+        val px = Projection { l -> frame.pixel(l).let { (x, y) -> MARGIN + x to TOP + y } }
         return buildString {
             val w = fmt(width)
             val h = fmt(height)
@@ -86,61 +85,82 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
             appendLine("""<rect width="100%" height="100%" fill="#fbfbf8"/>""")
             appendLine("""<text x="${fmt(MARGIN)}" y="24" font-family="sans-serif" font-size="16">${escape(title)}</text>""")
             if (area.isNotEmpty()) {
-                appendLine("""<g id="survey-area"><polygon points="${points(area)}" fill="$AREA" fill-opacity="0.2" stroke="$AREA" stroke-width="1.5"/></g>""")
+                appendLine("""<g id="survey-area"><polygon points="${px.points(area)}" fill="$AREA" fill-opacity="0.2" stroke="$AREA" stroke-width="1.5"/></g>""")
             }
-            if (forward.isNotEmpty()) {
-                appendLine("""<g id="forward-path">""")
-                for ((photographed, run) in legs(forward)) {
-                    val style = if (photographed) """class="track-leg" stroke-width="1.5"""" else """class="turn-leg" stroke-width="1.2" stroke-dasharray="2 3""""
-                    appendLine("""<polyline $style fill="none" stroke="$PATH" points="${points(run)}"/>""")
-                }
-                appendLine("</g>")
-                appendLine("""<g id="photo-waypoints">""")
-                forward.forEachIndexed { i, wp ->
-                    if (wp.photo) px(wp.location).let { (x, y) -> appendLine("""<circle class="photo" data-waypoint="$i" cx="${fmt(x)}" cy="${fmt(y)}" r="2.5" fill="$PATH"/>""") }
-                }
-                appendLine("</g>")
-            }
-            for ((planned, group) in listOf(true to "planned", false to "flown")) {
-                val layer = lines.filter { it.planned == planned }
-                if (layer.isEmpty()) continue
-                appendLine("""<g id="$group">""")
-                for (line in layer) {
-                    val style = if (planned) """stroke-width="1.5" stroke-dasharray="6 4" stroke-opacity="0.6"""" else """stroke-width="2.5""""
-                    val colour = colour(line.vehicleId)
-                    appendLine("""<polyline class="vehicle-${line.vehicleId}" fill="none" stroke="$colour" $style points="${points(line.points)}"><title>${escape(line.label)}</title></polyline>""")
-                    if (planned) line.points.forEach { p -> px(p).let { (x, y) -> appendLine("""<circle cx="${fmt(x)}" cy="${fmt(y)}" r="2.5" fill="$colour"/>""") } }
-                }
-                appendLine("</g>")
-            }
-            if (objects.isNotEmpty()) {
-                appendLine("""<g id="objects">""")
-                objects.forEach { o -> px(o).let { (x, y) -> appendLine(cross(x, y, OBJECT, """ class="object"""")) } }
-                appendLine("</g>")
-            }
-            if (detections.isNotEmpty()) {
-                appendLine("""<g id="detections">""")
-                for ((i, l) in detections) px(l).let { (x, y) ->
-                    appendLine("""<circle class="detection" data-waypoint="$i" cx="${fmt(x)}" cy="${fmt(y)}" r="6" fill="none" stroke="$DETECTION" stroke-width="2.5"><title>waypoint $i detected something</title></circle>""")
-                }
-                appendLine("</g>")
-            }
-            if (backward.isNotEmpty()) {
-                appendLine("""<g id="backward-path">""")
-                appendLine("""<polyline class="backward-leg" fill="none" stroke="$BACKWARD" stroke-width="2.5" points="${points(backward.map { it.second })}"/>""")
-                backward.forEachIndexed { n, (i, l) ->
-                    val (x, y) = px(l)
-                    appendLine("""<circle class="backward-stop" data-waypoint="$i" cx="${fmt(x)}" cy="${fmt(y)}" r="4" fill="$BACKWARD"/>""")
-                    appendLine("""<text class="backward-number" data-waypoint="$i" x="${fmt(x + 7)}" y="${fmt(y - 7)}" font-family="sans-serif" font-size="12" fill="$BACKWARD">${n + 1}</text>""")
-                }
-                appendLine("</g>")
-            }
+            // Tracks go under the forward path: a survey's flown track follows the plan, and the
+            // plan (with its photo dots) must stay readable on top of it.
+            vehicleLayers(px)
+            forwardLayers(px)
+            markerLayers(px)
             Legend.render(this, legend, width - legendWidth, TOP)
             val barMetres = frame.scaleBarMetres(max(frame.width * 0.4, 60.0))
             val bar = barMetres * frame.pixelsPerMetre
             appendLine("""<g id="scale-bar"><line x1="${fmt(MARGIN)}" y1="${fmt(height - 15)}" x2="${fmt(MARGIN + bar)}" y2="${fmt(height - 15)}" stroke="black" stroke-width="2"/>""")
             appendLine("""<text x="${fmt(MARGIN + bar + 6)}" y="${fmt(height - 11)}" font-family="sans-serif" font-size="12">${distance(barMetres)}</text></g>""")
             appendLine("</svg>")
+        }
+    }
+
+    /** Maps a location to canvas pixels. */
+    private fun interface Projection {
+        fun pixel(l: Location): Pair<Double, Double>
+
+        fun points(list: List<Location>): String = list.joinToString(" ") { l -> pixel(l).let { (x, y) -> "${fmt(x)},${fmt(y)}" } }
+    }
+
+    private fun StringBuilder.vehicleLayers(px: Projection) {
+        for ((planned, group) in listOf(true to "planned", false to "flown")) {
+            val layer = lines.filter { it.planned == planned }
+            if (layer.isEmpty()) continue
+            appendLine("""<g id="$group">""")
+            for (line in layer) {
+                val style = if (planned) """stroke-width="1.5" stroke-dasharray="6 4" stroke-opacity="0.6"""" else """stroke-width="2.5""""
+                val colour = colour(line.vehicleId)
+                appendLine("""<polyline class="vehicle-${line.vehicleId}" fill="none" stroke="$colour" $style points="${px.points(line.points)}"><title>${escape(line.label)}</title></polyline>""")
+                if (planned) line.points.forEach { p -> px.pixel(p).let { (x, y) -> appendLine("""<circle cx="${fmt(x)}" cy="${fmt(y)}" r="2.5" fill="$colour"/>""") } }
+            }
+            appendLine("</g>")
+        }
+    }
+
+    private fun StringBuilder.forwardLayers(px: Projection) {
+        if (forward.isNotEmpty()) {
+            appendLine("""<g id="forward-path">""")
+            for ((photographed, run) in legs(forward)) {
+                val style = if (photographed) """class="track-leg" stroke-width="1.5"""" else """class="turn-leg" stroke-width="1.2" stroke-dasharray="2 3""""
+                appendLine("""<polyline $style fill="none" stroke="$PATH" points="${px.points(run)}"/>""")
+            }
+            appendLine("</g>")
+            appendLine("""<g id="photo-waypoints">""")
+            forward.forEachIndexed { i, wp ->
+                if (wp.photo) px.pixel(wp.location).let { (x, y) -> appendLine("""<circle class="photo" data-waypoint="$i" cx="${fmt(x)}" cy="${fmt(y)}" r="2.5" fill="$PATH"/>""") }
+            }
+            appendLine("</g>")
+        }
+    }
+
+    private fun StringBuilder.markerLayers(px: Projection) {
+        if (objects.isNotEmpty()) {
+            appendLine("""<g id="objects">""")
+            objects.forEach { o -> px.pixel(o).let { (x, y) -> appendLine(cross(x, y, OBJECT, """ class="object"""")) } }
+            appendLine("</g>")
+        }
+        if (detections.isNotEmpty()) {
+            appendLine("""<g id="detections">""")
+            for ((i, l) in detections) px.pixel(l).let { (x, y) ->
+                appendLine("""<circle class="detection" data-waypoint="$i" cx="${fmt(x)}" cy="${fmt(y)}" r="6" fill="none" stroke="$DETECTION" stroke-width="2.5"><title>waypoint $i detected something</title></circle>""")
+            }
+            appendLine("</g>")
+        }
+        if (backward.isNotEmpty()) {
+            appendLine("""<g id="backward-path">""")
+            appendLine("""<polyline class="backward-leg" fill="none" stroke="$BACKWARD" stroke-width="2.5" points="${px.points(backward.map { it.second })}"/>""")
+            backward.forEachIndexed { n, (i, l) ->
+                val (x, y) = px.pixel(l)
+                appendLine("""<circle class="backward-stop" data-waypoint="$i" cx="${fmt(x)}" cy="${fmt(y)}" r="4" fill="$BACKWARD"/>""")
+                appendLine("""<text class="backward-number" data-waypoint="$i" x="${fmt(x + 7)}" y="${fmt(y - 7)}" font-family="sans-serif" font-size="12" fill="$BACKWARD">${n + 1}</text>""")
+            }
+            appendLine("</g>")
         }
     }
 
