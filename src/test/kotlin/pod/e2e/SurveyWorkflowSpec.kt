@@ -12,9 +12,8 @@ import pod.core.units.m
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.LandedState
 import pod.core.workflow.AltitudeCorrection
-import pod.mavlink.workflow.Forward
+import pod.core.workflow.Forward
 import pod.mavlink.workflow.SurveyWorkflow
-import pod.mavlink.workflow.takePhoto
 import pod.sim.SimDetections
 import pod.sim.SimVehicleConfig
 import pod.sim.world.Hill

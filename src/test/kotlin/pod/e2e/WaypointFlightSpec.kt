@@ -11,9 +11,9 @@ import pod.core.units.Location
 import pod.core.units.m
 import pod.core.vehicle.Autopilot
 import pod.mavlink.MavlinkVehicle
-import pod.mavlink.workflow.OnFailure
+import pod.core.workflow.OnFailure
 import pod.mavlink.workflow.Stop
-import pod.mavlink.workflow.WaypointActionFailed
+import pod.core.workflow.WaypointActionFailed
 import pod.mavlink.workflow.WaypointFlight
 import pod.sim.SimVehicle
 import pod.sim.SimVehicleConfig

@@ -39,6 +39,20 @@ public sealed class Task {
         override val label: String get() = "queue"
     }
 
+    /**
+     * Fly the survey workflow [job] on the one vehicle the task is bound to (a forward pass with an
+     * action at every photo waypoint, a backward pass over the flagged ones, then home). Completes
+     * when the vehicle is home ([pod.core.workflow.SurveyJob.result] then holds what it recorded).
+     */
+    public class Survey(
+        /** The workflow to fly. */
+        public val job: pod.core.workflow.SurveyJob<*, *>,
+        /** What a vehicle does when this task is cancelled, or null for the program's choice. */
+        public val onCancel: SafeState? = null,
+    ) : Task() {
+        override val label: String get() = "survey"
+    }
+
     /** Run [tasks] one after the other; the first failure ends the sequence (Dolphin `>>`). */
     public class Sequence(
         /** The tasks in order. */

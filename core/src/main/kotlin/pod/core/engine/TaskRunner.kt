@@ -49,6 +49,7 @@ internal class TaskRunner(private val engine: Engine, private val program: Progr
         when (task) {
             is Task.Fly -> fly(task, vehicles ?: throw UnboundTask(task.label), id)
             is Task.FlyQueue -> flyQueue(task, vehicles ?: throw UnboundTask(task.label), id)
+            is Task.Survey -> survey(task, vehicles ?: throw UnboundTask(task.label))
             is Task.Sequence -> task.tasks.forEach { run(it, vehicles, id) }
             is Task.Concurrent -> coroutineScope { task.tasks.forEach { launch { run(it, vehicles, id) } } }
             is Task.Until -> until(task, vehicles, id)
@@ -114,6 +115,11 @@ internal class TaskRunner(private val engine: Engine, private val program: Progr
     private suspend fun flyQueue(task: Task.FlyQueue, vehicles: VehicleSet, id: Int) {
         val vehicle = vehicles.singleOrNull() ?: throw if (vehicles.isEmpty()) UnboundTask(task.label) else QueueNeedsOneVehicle(vehicles.size)
         steer(task.label, vehicle, task.onCancel) { engine.platform.flyQueue(vehicle, task.queue, task.whenEmpty) }
+    }
+
+    private suspend fun survey(task: Task.Survey, vehicles: VehicleSet) {
+        val vehicle = vehicles.singleOrNull() ?: throw if (vehicles.isEmpty()) UnboundTask(task.label) else pod.core.workflow.SurveyNeedsOneVehicle(vehicles.size)
+        steer(task.label, vehicle, task.onCancel) { engine.platform.flySurvey(vehicle, task.job) }
     }
 
     /**

@@ -40,6 +40,15 @@ public interface Platform {
         throw pod.core.queue.QueueUnsupported(this::class.simpleName ?: "this platform")
     }
 
+    /**
+     * Flies the survey workflow [job] on [vehicle] until it is home (or, with a mission control,
+     * until the operator's flight ends), like [fly]: typed exceptions, no safe state of its own on
+     * cancellation. Platforms that cannot throw [pod.core.workflow.SurveyUnsupported].
+     */
+    public suspend fun flySurvey(vehicle: PlatformVehicle, job: pod.core.workflow.SurveyJob<*, *>) {
+        throw pod.core.workflow.SurveyUnsupported(this::class.simpleName ?: "this platform")
+    }
+
     /** Puts [vehicle] in [state] (hold where it is, or return home) and returns once it is confirmed. */
     public suspend fun makeSafe(vehicle: PlatformVehicle, state: SafeState)
 }

@@ -1,12 +1,15 @@
 package pod.core.workflow
 
-/** Which pass of a survey workflow is flown: the photo pass, or the revisit of flagged waypoints. */
+/** Which part of a survey workflow is flown: the photo pass, the revisit of flagged waypoints, or the way home. */
 public enum class Pass {
     /** Every waypoint, in order (photos, detections). */
     FORWARD,
 
     /** Only the flagged waypoints (e.g. a range measurement at each). */
     BACKWARD,
+
+    /** Both passes done: flying home (a multirotor lands there). */
+    HOME,
 }
 
 /** The states an operator sees. */
@@ -99,3 +102,11 @@ public sealed interface CommandOutcome<out P> {
     /** Refused for [reason]: nothing changed. */
     public data class Refused(val reason: String) : CommandOutcome<Nothing>
 }
+
+/**
+ * What the operator asked for last, as the flight side reads it: the app's [state] right after the
+ * latest command, and the event id of the start command of the flight that state is about
+ * ([startedBy], 0 before any): a flight side that missed commands in between (it reads the latest
+ * only) still knows whether this is a flight it has not flown yet.
+ */
+public data class ControlIntent<P>(val state: ControlState<P>, val startedBy: Long)

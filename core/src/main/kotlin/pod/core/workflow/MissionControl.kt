@@ -3,6 +3,7 @@ package pod.core.workflow
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
+import kotlinx.coroutines.flow.update
 
 /**
  * What an operator's app shows of a survey workflow and sends to it, as the I-Seed service's mission
@@ -23,9 +24,17 @@ import kotlinx.coroutines.flow.asStateFlow
 public class MissionControl<P>(initial: ControlState<P> = ControlState(ControlPhase.Waiting, null, 0)) {
     private val _state = MutableStateFlow(initial)
     private val issued = MutableStateFlow(initial.eventId)
+    private val _intent = MutableStateFlow(ControlIntent(initial, 0))
 
     /** What the app shows. */
     public val state: StateFlow<ControlState<P>> = _state.asStateFlow()
+
+    /**
+     * What the operator asked for last: the state right after the latest accepted command (not
+     * moved by reports) and which start it belongs to. The flight side follows it (pause when it
+     * says paused, abort when aborted) and stamps its reports with its event id.
+     */
+    public val intent: StateFlow<ControlIntent<P>> = _intent.asStateFlow()
 
     /** The event id for the operator's next command: one more than any issued or seen so far. */
     public fun nextEventId(): Long {
@@ -42,7 +51,13 @@ public class MissionControl<P>(initial: ControlState<P> = ControlState(ControlPh
             val current = _state.value
             val outcome = ControlRules.apply(current, command)
             if (outcome !is CommandOutcome.Accepted) return outcome
-            if (_state.compareAndSet(current, outcome.state)) return outcome
+            if (_state.compareAndSet(current, outcome.state)) {
+                _intent.update {
+                    if (it.state.eventId >= outcome.state.eventId) it
+                    else ControlIntent(outcome.state, if (command is ControlCommand.Start) command.eventId else it.startedBy)
+                }
+                return outcome
+            }
         }
     }
 
@@ -52,6 +67,18 @@ public class MissionControl<P>(initial: ControlState<P> = ControlState(ControlPh
             val current = _state.value
             val next = ControlRules.report(current, report) ?: return false
             if (_state.compareAndSet(current, next)) return true
+        }
+    }
+
+    public companion object {
+        /**
+         * A controller for an app that (re)attaches to a flight already under way: it starts from
+         * what the flight last reported ([latest], with the event id it carries) and the [plan]
+         * being flown, instead of assuming a vehicle ready for a new path.
+         */
+        public fun <P> attachedTo(latest: ControlReport, plan: P? = null): MissionControl<P> {
+            val start = ControlState<P>(ControlPhase.Waiting, plan, 0)
+            return MissionControl(ControlRules.report(start, latest) ?: start)
         }
     }
 }

@@ -85,6 +85,11 @@ public class MavlinkPlatform(
         pod.mavlink.queue.QueueFlight(mavlink(vehicle), queue, queueFlight).fly(whenEmpty)
     }
 
+    /** Flies the survey workflow [job] on [vehicle] ([pod.mavlink.workflow.SurveyWorkflow], or [pod.mavlink.workflow.SurveyOperation] when it serves a mission control). */
+    override suspend fun flySurvey(vehicle: PlatformVehicle, job: pod.core.workflow.SurveyJob<*, *>) {
+        pod.mavlink.workflow.flySurveyJob(mavlink(vehicle), job, timeScale, queueFlight)
+    }
+
     /**
      * Holds ([SafeState.HOLD]: [VehicleActions.hold][pod.mavlink.action.VehicleActions.hold], a
      * mode that keeps altitude with nobody on the sticks) or returns to launch

@@ -1,10 +1,13 @@
 package pod.mavlink.workflow
 
 import kotlinx.coroutines.CancellationException
+import kotlinx.coroutines.CoroutineStart
 import kotlinx.coroutines.TimeoutCancellationException
 import kotlinx.coroutines.async
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.combine
 import kotlinx.coroutines.flow.filterNotNull
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
@@ -18,6 +21,13 @@ import pod.core.queue.WhenEmpty
 import pod.core.units.Distance
 import pod.core.units.Location
 import pod.core.workflow.AltitudeCorrection
+import pod.core.workflow.OnFailure
+import pod.core.workflow.Photo
+import pod.core.workflow.WaypointActionFailed
+import pod.core.workflow.WaypointRecord
+import pod.core.workflow.WaypointVisit
+import pod.mavlink.command.MavCommands
+import pod.mavlink.command.VehicleCommand
 import pod.mavlink.MessageIds
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.queue.QueueFlight
@@ -50,33 +60,66 @@ public class WaypointFlight(
 ) {
     /**
      * Flies [waypoints] (altitudes above home) in order and returns a record per waypoint; [stop]
-     * says where to stop and what to run there.
+     * says where to stop and what to run there, [correction] keeps the height above the ground, and
+     * [control] pauses the flight and hears where it is.
      */
-    public suspend fun <R> fly(waypoints: List<Location>, stop: Stop<R>, correction: AltitudeCorrection? = null): List<WaypointRecord<R>> = coroutineScope {
+    public suspend fun <R> fly(
+        waypoints: List<Location>,
+        stop: Stop<R>,
+        correction: AltitudeCorrection? = null,
+        control: FlightControl? = null,
+    ): List<WaypointRecord<R>> = coroutineScope {
         require(waypoints.isNotEmpty()) { "give at least one waypoint" }
         val queue = MissionQueue(vehicle.clock, timeScale)
         val flight = async { QueueFlight(vehicle, queue, config).fly(WhenEmpty.WAIT) }
         // Written by the correction's collector, read by this loop: thread-safe holders.
         val offset = MutableStateFlow(Distance.ZERO)
         val flyingTo = MutableStateFlow<Int?>(null)
+        val paused = control?.paused ?: MutableStateFlow(false)
         fun goto(index: Int) = QueueElement(
             QueuePattern.Goto(QueuePoint.Global(waypoints[index])),
             altitude = (waypoints[index].altitude + offset.value).takeIf { it.meters > 0 },
         )
-        val correcting = correction?.let { c -> launch { correct(c, queue) { change ->
+        val correcting = correction?.let { c -> launch { correct(c, queue, paused) { change ->
             offset.value += change
             // The waypoint being flown to moves too; the ones after take the offset when appended.
             flyingTo.value?.let { i -> if (!queue.state.value.isEmpty) queue.replaceCurrent(goto(i)) }
         } } }
+
+        /** Holds where the vehicle is while paused, then heads for waypoint [index] again, or (on it) stays. */
+        suspend fun holdWhilePaused(index: Int, onWaypoint: Boolean) {
+            if (!paused.value) return
+            flyingTo.value = null
+            if (!onWaypoint) queue.replaceCurrent(QueueElement(QueuePattern.Hold))
+            control?.onProgress?.invoke(index, true)
+            paused.first { !it }
+            control?.onProgress?.invoke(index, false)
+            if (!onWaypoint) {
+                flyingTo.value = index
+                queue.replaceCurrent(goto(index))
+            }
+        }
+
+        /** Flies to waypoint [index], holding on the way whenever paused; returns once it is reached. */
+        suspend fun reach(index: Int) {
+            flyingTo.value = index
+            queue.append(goto(index))
+            control?.onProgress?.invoke(index, false)
+            // Reached: the queue ran empty (one goto at a time; a corrected altitude or a pause
+            // replaces it). A flight that fails (a refusal, a lost vehicle) cancels this scope, and
+            // its failure is what fly() throws.
+            while (true) {
+                // A pause outranks an arrival seen at the same moment: it holds there.
+                val reached = combine(queue.state, paused) { q, p -> if (p) false else if (q.isEmpty) true else null }.filterNotNull().first()
+                if (reached) break
+                holdWhilePaused(index, onWaypoint = false)
+            }
+            flyingTo.value = null
+        }
+
         try {
             waypoints.indices.map { index ->
-                flyingTo.value = index
-                queue.append(goto(index))
-                // Reached: the queue ran empty (one goto at a time; a corrected altitude replaces it).
-                // A flight that fails (a refusal, a lost vehicle) cancels this scope, and its
-                // failure is what fly() throws.
-                queue.state.first { it.isEmpty }
-                flyingTo.value = null
+                reach(index)
                 val reached = queue.now()
                 var began: Duration? = null
                 val outcome = if (stop.at(index)) {
@@ -86,7 +129,9 @@ public class WaypointFlight(
                 } else {
                     null
                 }
-                WaypointRecord(index, waypoints[index], reached, began, queue.now(), outcome?.first, outcome?.second ?: 0, offset.value)
+                val left = queue.now()
+                holdWhilePaused(index, onWaypoint = true)
+                WaypointRecord(index, waypoints[index], reached, began, left, outcome?.first, outcome?.second ?: 0, offset.value)
             }
         } finally {
             correcting?.cancel()
@@ -98,7 +143,7 @@ public class WaypointFlight(
      * Feeds the rangefinder's readings to [correction] (asking the vehicle for them first: ArduPilot
      * streams DISTANCE_SENSOR only when asked) and passes on each change it decides.
      */
-    private suspend fun correct(correction: AltitudeCorrection, queue: MissionQueue, apply: (Distance) -> Unit) {
+    private suspend fun correct(correction: AltitudeCorrection, queue: MissionQueue, paused: StateFlow<Boolean>, apply: (Distance) -> Unit) {
         try {
             vehicle.action.setMessageInterval(MessageIds.DISTANCE_SENSOR, 200.milliseconds)
         } catch (e: PodException) {
@@ -106,7 +151,7 @@ public class WaypointFlight(
         }
         vehicle.telemetry.rangefinder.filterNotNull().collect { measured ->
             val altitude = vehicle.telemetry.position.value?.relativeAltitude ?: return@collect
-            if (queue.state.value.isEmpty) return@collect // holding for an action: measure while flying
+            if (queue.state.value.isEmpty || paused.value) return@collect // holding: measure while flying
             correction.reading(measured, altitude)?.let(apply)
         }
     }
@@ -132,7 +177,7 @@ public class WaypointFlight(
         while (true) {
             tries++
             val failure: Throwable = try {
-                return withTimeout(stop.timeout / timeScale) { stop.action(WaypointVisit(index, point, vehicle)) } to tries
+                return withTimeout(stop.timeout / timeScale) { stop.action(MavlinkWaypointVisit(index, point, vehicle)) } to tries
             } catch (e: TimeoutCancellationException) {
                 e
             } catch (e: CancellationException) {
@@ -165,54 +210,50 @@ public class Stop<R>(
     }
 }
 
-/** What a failed waypoint action leads to. */
-public sealed interface OnFailure {
-    /** Record no result and go on to the next waypoint. */
-    public data object Skip : OnFailure
+/** A waypoint action's view on a MAVLink vehicle: the [vehicle] itself, for any command or sensor, and its camera. */
+public class MavlinkWaypointVisit(
+    override val index: Int,
+    override val point: Location,
+    /** The vehicle holding on the waypoint. */
+    public val vehicle: MavlinkVehicle,
+) : WaypointVisit {
+    override suspend fun takePhoto(timeout: Duration): Photo = vehicle.takePhoto(timeout)
 
-    /** Run the action up to [times] more times, then abort. */
-    public data class Retry(val times: Int) : OnFailure {
-        init {
-            require(times in 1..100) { "times must be in 1..100, was $times" }
-        }
-    }
-
-    /** End the flight with [WaypointActionFailed]. */
-    public data object Abort : OnFailure
+    override suspend fun measureRange(timeout: Duration): Distance = vehicle.measureRange(timeout)
 }
 
-/** What an action knows: which waypoint, where, and the vehicle (to take a photo, read a sensor). */
-public class WaypointVisit(
-    /** The waypoint's number, from 0. */
-    public val index: Int,
-    /** Where it is (altitude above home). */
-    public val point: Location,
-    /** The vehicle holding on it. */
-    public val vehicle: MavlinkVehicle,
-)
+/**
+ * The distance the downward rangefinder measures (DISTANCE_SENSOR), within [timeout]: asks the
+ * vehicle to stream it (ArduPilot sends it only when asked) and takes the latest reading.
+ */
+public suspend fun MavlinkVehicle.measureRange(timeout: Duration = 5.seconds): Distance {
+    try {
+        action.setMessageInterval(MessageIds.DISTANCE_SENSOR, 200.milliseconds)
+    } catch (e: PodException) {
+        // A vehicle that will not stream it may send it anyway (PX4 does, at 0.5 Hz); wait for it.
+    }
+    return withTimeout(timeout) { telemetry.rangefinder.filterNotNull().first() }
+}
 
 /**
- * One waypoint flown: when it was [reached], when the vehicle had stopped and the action [began]
- * (null: no action here), and when it [left] (vehicle time since the flight began), and the
- * action's [result] (null: none or skipped) after [tries].
+ * Takes one photo (MAV_CMD_IMAGE_START_CAPTURE, one image) and returns what the vehicle reports of
+ * it (CAMERA_IMAGE_CAPTURED), within [timeout].
  */
-public data class WaypointRecord<R>(
-    val index: Int,
-    val point: Location,
-    val reached: Duration,
-    val began: Duration?,
-    val left: Duration,
-    val result: R?,
-    val tries: Int,
-    /** The altitude correction in force when it was left (zero without one). */
-    val altitudeOffset: Distance = Distance.ZERO,
-)
+public suspend fun MavlinkVehicle.takePhoto(timeout: Duration = 10.seconds): Photo = coroutineScope {
+    val next = async(start = CoroutineStart.UNDISPATCHED) { telemetry.imagesCaptured.first() }
+    commands.send(VehicleCommand(MavCommands.IMAGE_START_CAPTURE, param1 = 0f, param2 = 0f, param3 = 1f))
+    val image = withTimeout(timeout) { next.await() }
+    Photo(image.imageIndex, image.location, image.relativeAltitude, image.success, image.fileUrl)
+}
 
-/** The action at waypoint [index] failed [tries] times (its last failure is the cause). */
-public class WaypointActionFailed(
-    /** The waypoint's number. */
-    public val index: Int,
-    /** How many times the action ran. */
-    public val tries: Int,
-    cause: Throwable,
-) : PodException("the action at waypoint $index failed after $tries ${if (tries == 1) "try" else "tries"}: ${cause.message ?: cause::class.simpleName}", cause)
+/**
+ * Lets a [WaypointFlight] be paused and tells who is watching where it is: while [paused] is true
+ * the vehicle holds where it is, at its altitude (between waypoints it stops there; on a waypoint
+ * it stays once the action is done), and goes on when it turns false.
+ */
+public class FlightControl(
+    /** True while the flight should hold. */
+    public val paused: StateFlow<Boolean>,
+    /** Called with the waypoint being flown to (or held on) and whether the vehicle now holds for a pause. */
+    public val onProgress: (waypoint: Int, holding: Boolean) -> Unit = { _, _ -> },
+)
