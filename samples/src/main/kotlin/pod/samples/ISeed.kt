@@ -1,8 +1,12 @@
 package pod.samples
 
+import kotlinx.coroutines.CoroutineStart
 import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.distinctUntilChangedBy
 import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.flow.transformWhile
+import kotlinx.coroutines.flow.update
 import kotlinx.coroutines.launch
 import pod.core.engine.Program
 import pod.core.platform.PlatformVehicle
@@ -91,16 +95,20 @@ public suspend fun Program.iSeed(): ISeedOutcome {
         },
         backward = { measureRange() },
     ) { correctAltitude(target = 30.m, minimum = 10.m, maximum = 80.m) }
-    val phases = mutableListOf<ControlPhase>()
+    // What the app shows, as it shows it; the app acts on what it has shown.
+    val shown = MutableStateFlow(listOf<ControlPhase>())
     val app = action("operator's app") {
         coroutineScope {
-            val showing = launch {
-                control.state.distinctUntilChangedBy { it.phase }.collect { s ->
-                    synchronized(phases) { phases += s.phase }
-                    message("app: ${describe(s.phase)} (event ${s.eventId})")
-                }
+            val showing = launch(start = CoroutineStart.UNDISPATCHED) {
+                control.state
+                    .distinctUntilChangedBy { it.phase }
+                    .transformWhile { emit(it); it.phase != ControlPhase.Finished && it.phase !is ControlPhase.Aborted }
+                    .collect { s ->
+                        shown.update { it + s.phase }
+                        message("app: ${describe(s.phase)} (event ${s.eventId})")
+                    }
             }
-            control.state.first { it.phase == ControlPhase.Ready }
+            shown.first { ControlPhase.Ready in it }
             val plan = PolygonSurvey.plan(field, 30.m, SurveySpacing.Direct(40.m), start = home, trigger = CameraTrigger.PER_WAYPOINT)
             control.command(ControlCommand.Build(control.nextEventId(), plan))
             control.command(ControlCommand.Start(control.nextEventId()))
@@ -108,13 +116,12 @@ public suspend fun Program.iSeed(): ISeedOutcome {
             control.command(ControlCommand.Pause(control.nextEventId()))
             execute(idle(20.seconds))
             control.command(ControlCommand.Resume(control.nextEventId()))
-            control.state.first { it.phase == ControlPhase.Finished || it.phase is ControlPhase.Aborted }
-            showing.cancel()
+            showing.join()
         }
     }
     execute((survey on v) and app)
     release(v)
-    return ISeedOutcome(v, home, field, survey.plan.value!!, survey.result.value!!, synchronized(phases) { phases.toList() })
+    return ISeedOutcome(v, home, field, survey.plan.value!!, survey.result.value!!, shown.value)
 }
 
 private fun describe(phase: ControlPhase): String = when (phase) {
