@@ -54,14 +54,25 @@ class ReadmeSpec : StringSpec({
 
     "the README's Programs example flies to completion on two simulated drones under pod run" {
         val programs = blocks.filter { it.file == "README.md" && it.code.any { line -> line.startsWith("pod {") } }
-        programs shouldHaveSize 2
-        val run = run(programs.single { block -> block.code.none { it.contains("missionQueue") } }, "--sim", "2", "--time-scale", "100")
+        programs shouldHaveSize 3
+        val run = run(programs.single { block -> block.code.none { it.contains("missionQueue") || it.contains("surveyWorkflow") } }, "--sim", "2", "--time-scale", "100")
         withClue({ run.err + run.out.joinToString("\n") }) {
             run.exitCode shouldBe 0
             run.err shouldNotContain "Exception"
             run.out.any { it.contains("done   home on [copter-1]") } shouldBe true
             run.out.any { it.contains("done   home on [copter-2]") } shouldBe true
             run.out.last() shouldBe run.out.last { it.contains("released copter-1, copter-2") }
+        }
+    }
+
+    "the README's survey-workflow example flies both passes and lands, on one simulated drone under pod run" {
+        val survey = blocks.single { it.file == "README.md" && it.code.any { line -> line.contains("surveyWorkflow(") } }
+        val run = run(survey, "--sim", "1", "--time-scale", "50")
+        withClue({ run.err + run.out.joinToString("\n") }) {
+            run.exitCode shouldBe 0
+            run.err shouldNotContain "Exception"
+            run.out.any { it.contains("done   survey on [copter-1]") } shouldBe true
+            run.out.any { Regex("""\d+ photos; revisited waypoints \[\d""").containsMatchIn(it) } shouldBe true
         }
     }
 
