@@ -153,7 +153,7 @@ class ScriptRunSpec : StringSpec({
     }
 
     "the README's Programs example runs unchanged against two vehicles reached with --connect" {
-        val program = MarkdownKotlin.blocks(File("../README.md")).single { block -> block.code.any { it.startsWith("pod {") } && block.code.none { it.contains("missionQueue") } }
+        val program = MarkdownKotlin.blocks(File("../README.md")).single { block -> block.code.any { it.startsWith("pod {") } && block.code.none { it.contains("missionQueue") || it.contains("surveyWorkflow(") } }
         val file = Files.createTempFile("readme-programs", ".main.kts").toFile().apply { writeText(program.script) }
         val run = try {
             connected(file.path, 2)
