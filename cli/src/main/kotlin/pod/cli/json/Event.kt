@@ -260,4 +260,24 @@ public sealed interface Event {
     /** `pod demo` ended: [ok], or [error]; [map] is the SVG of missions and tracks. The last line. */
     @Serializable @SerialName("demo_done")
     public data class DemoDone(val ok: Boolean, val error: String?, val map: String) : Event
+
+    /**
+     * `pod survey` ended: [ok], or [error]; [photos] taken on the forward pass with [detections]
+     * in all, the plan's indices of the [flagged] waypoints, the [backward] pass's measurements in
+     * the order flown, and [map], the SVG written. The last line.
+     */
+    @Serializable @SerialName("survey_done")
+    public data class SurveyDone(
+        val ok: Boolean,
+        val error: String?,
+        val photos: Int?,
+        val detections: Int?,
+        val flagged: List<Int>?,
+        val backward: List<Measured>?,
+        val map: String,
+    ) : Event
+
+    /** One backward-pass measurement: the plan's [waypoint] and the range there in metres ([rangeM], null: none). */
+    @Serializable
+    public data class Measured(val waypoint: Int, @SerialName("range_m") val rangeM: Finite?)
 }
