@@ -14,6 +14,17 @@ import pod.core.vehicle.LandedState
 import pod.core.workflow.ControlPhase
 import pod.core.workflow.Pass
 import pod.core.workflow.SurveyNeedsOneVehicle
+import pod.core.workflow.SurveyAborted
+import pod.core.workflow.ControlCommand
+import pod.core.workflow.MissionControl
+import pod.core.survey.SurveyPlan
+import pod.core.survey.PolygonSurvey
+import pod.core.survey.CameraTrigger
+import pod.dsl.action
+import pod.dsl.and
+import pod.dsl.survey.surveyService
+import io.kotest.matchers.types.shouldBeInstanceOf
+import kotlinx.coroutines.flow.first
 import pod.dsl.mission
 import pod.dsl.on
 import pod.dsl.pick
@@ -85,6 +96,32 @@ class SurveyProgramSpec : StringSpec({
             run.backward shouldBe emptyList()
             landed shouldBe LandedState.ON_GROUND
             record.events.filterIsInstance<EngineEvent.TaskCompleted>().map { it.label } shouldContainAll listOf("survey")
+        }
+    }
+
+    "surveyService after the program's own take-off: ready in the air, the operator's path started from there, an abort ends the task with SurveyAborted once the vehicle is home" {
+        virtualRun(seed = 25, timeout = 4.minutes) {
+            val (result, _) = simulate(listOf(SimFlavor.ARDUCOPTER)) {
+                val v = pick { count(1) }[0]
+                val home = v.home.value!!
+                execute(mission("up") { home(home); takeOff(20.m) } on v)
+                val control = MissionControl<SurveyPlan>()
+                val service = surveyService(control, forward = { pass(Unit) }, backward = { })
+                val operator = action("app") {
+                    control.state.first { it.phase == ControlPhase.Ready }
+                    val field = listOf(0 to 0, 0 to 60, 60 to 60, 60 to 0).map { (n, e) -> home.offset((n + 20).m, e.m) }
+                    control.command(ControlCommand.Build(control.nextEventId(), PolygonSurvey.plan(field, 20.m, SurveySpacing.Direct(30.m), start = home, trigger = CameraTrigger.PER_WAYPOINT)))
+                    control.command(ControlCommand.Start(control.nextEventId()))
+                    control.state.first { ((it.phase as? ControlPhase.Executing)?.waypoint ?: 0) >= 2 }
+                    control.command(ControlCommand.Abort(control.nextEventId()))
+                }
+                val failure = shouldThrow<SurveyAborted> { execute((service on v) and operator) }
+                Triple(failure.reason, v.landedState.value, control.state.value.phase)
+            }
+            val (reason, landed, phase) = result
+            reason shouldBe "aborted by the operator"
+            landed shouldBe LandedState.ON_GROUND
+            phase.shouldBeInstanceOf<ControlPhase.Aborted>()
         }
     }
 })

@@ -27,7 +27,8 @@ internal suspend fun <F, B> flySurveyJob(vehicle: MavlinkVehicle, job: SurveyJob
         job.finished(workflow.run(plan, { job.forward(it) }, { job.backward(it) }))
         return
     }
-    val operation = SurveyOperation(vehicle, control, workflow, { job.forward(it) }, { job.backward(it) })
+    // The program owns the vehicle: flown up before this task, it is ready for the operator's path.
+    val operation = SurveyOperation(vehicle, control, workflow, { job.forward(it) }, { job.backward(it) }, readyInTheAir = true)
     coroutineScope {
         val planning = launch { control.intent.collect { it.state.plan?.let(job::planned) } }
         operation.serve(flights = 1)

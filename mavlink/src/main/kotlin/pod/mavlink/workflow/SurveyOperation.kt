@@ -50,15 +50,21 @@ public class SurveyOperation<F, B>(
     private val backward: suspend (WaypointVisit) -> B,
     /** How often the latest report is sent again (station time). */
     private val resendEvery: Duration = 1.seconds,
+    /**
+     * Whether a vehicle found in the air is ready for a path (a program that flew it up for this
+     * survey) rather than stopped (a station restarted under a flight it knows nothing of).
+     */
+    private val readyInTheAir: Boolean = false,
 ) {
-    /** Serves [control] directly (the app in the same process). */
+    /** Serves [control] directly (the app in the same process); see [readyInTheAir] for a vehicle already flying. */
     public constructor(
         vehicle: MavlinkVehicle,
         control: MissionControl<SurveyPlan>,
         workflow: SurveyWorkflow,
         forward: suspend (WaypointVisit) -> Forward<F>,
         backward: suspend (WaypointVisit) -> B,
-    ) : this(vehicle, control.intent, { control.report(it) }, workflow, forward, backward)
+        readyInTheAir: Boolean = false,
+    ) : this(vehicle, control.intent, { control.report(it) }, workflow, forward, backward, readyInTheAir = readyInTheAir)
 
     private val _latest = MutableStateFlow<ControlReport>(ControlReport.Vehicle(0, false))
     private val _runs = MutableStateFlow<List<SurveyRun<F, B>>>(emptyList())
@@ -144,6 +150,11 @@ public class SurveyOperation<F, B>(
             (vehicle.telemetry.armed.value && (vehicle.telemetry.position.value?.relativeAltitude?.meters ?: 0.0) > 1.0)
         if (!airborne) {
             send(ControlReport.Vehicle(applied, vehicle.telemetry.home.value != null && vehicle.telemetry.position.value != null))
+            return
+        }
+        if (readyInTheAir) {
+            vehicle.action.hold()
+            send(ControlReport.Vehicle(applied, ready = true))
             return
         }
         val mode = vehicle.telemetry.mode.value?.name.orEmpty()
