@@ -17,6 +17,7 @@ import pod.core.workflow.WaypointActionFailed
 import pod.mavlink.workflow.WaypointFlight
 import pod.sim.SimVehicle
 import pod.sim.SimVehicleConfig
+import pod.sim.fault.LinkFaults
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 
@@ -51,6 +52,21 @@ class WaypointFlightSpec : StringSpec({
                 records.zipWithNext().forEach { (a, b) -> (b.reached > a.left) shouldBe true }
             } }
         }
+    }
+
+    "over a 100 ms round trip the vehicle holds on the waypoint itself while the action runs, not where a round-trip-old position put it" {
+        val slow = LinkFaults(delay = 50.milliseconds)
+        virtualRun(seed = 19, up = slow, down = slow) { flying(SimVehicleConfig(systemId = 83)) { v, sim ->
+            val home = up(v)
+            val points = square(home)
+            val off = mutableListOf<Double>() // metres off the point as each action ends
+            WaypointFlight(v).fly(points, Stop { visit ->
+                delay(4.seconds)
+                off += sim.state.value.location.copy(altitude = visit.point.altitude).distanceTo(absolute(visit.point, home)).meters
+            })
+            off.size shouldBe points.size
+            off.forEach { it shouldBeLessThan 0.5 }
+        } }
     }
 
     "a failing action is skipped, retried or ends the flight, as its policy says; a slow one times out" {

@@ -6,6 +6,8 @@ import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
+import kotlinx.coroutines.flow.combine
+import kotlinx.coroutines.flow.distinctUntilChanged
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withTimeoutOrNull
@@ -100,12 +102,10 @@ public class SurveyOperation<F, B>(
             }
         }
         val readiness = launch {
-            var last: Boolean? = null
-            vehicle.telemetry.position.collect {
-                val ready = vehicle.telemetry.home.value != null && it != null
-                if (ready != last && _latest.value is ControlReport.Vehicle) send(ControlReport.Vehicle(applied.value, ready))
-                last = ready
-            }
+            // Home and position both known: either can come last (over a lossy link, often home).
+            combine(vehicle.telemetry.home, vehicle.telemetry.position) { home, position -> home != null && position != null }
+                .distinctUntilChanged()
+                .collect { ready -> if (_latest.value is ControlReport.Vehicle) send(ControlReport.Vehicle(applied.value, ready)) }
         }
         var count = 0
         while (count < flights) {
