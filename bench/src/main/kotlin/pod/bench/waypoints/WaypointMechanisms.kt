@@ -23,6 +23,7 @@ import kotlin.time.Duration.Companion.seconds
 enum class Mechanism(val label: String) {
     NONSTOP("no stops: AUTO mission, no hold time (reference path)"),
     QUEUE("(a) queue stop-and-go: WaypointFlight, a goto per waypoint"),
+    GOTO_HOLD("(a′) a goto per waypoint, holding on the point it reached"),
     MODE_SWITCH("(b) AUTO; hold mode on MISSION_ITEM_REACHED, AUTO again after"),
     HOLD_SET_CURRENT("(c) AUTO, long hold time per waypoint; MISSION_SET_CURRENT after"),
 }
@@ -56,6 +57,7 @@ class WaypointCourse(
         when (mechanism) {
             Mechanism.NONSTOP -> nonstop()
             Mechanism.QUEUE -> queue(actions)
+            Mechanism.GOTO_HOLD -> gotoAndHold(actions)
             Mechanism.MODE_SWITCH -> modeSwitch(actions)
             Mechanism.HOLD_SET_CURRENT -> holdAndSetCurrent(actions)
         }
@@ -111,6 +113,22 @@ class WaypointCourse(
     private suspend fun queue(log: MutableList<ActionRun>) {
         val relative = waypoints.map { it.copy(altitude = height.m) }
         WaypointFlight(rig.vehicle).fly(relative, Stop(timeout = 60.seconds) { visit -> act(visit.index, log) })
+    }
+
+    /**
+     * (a′) As (a), but the vehicle is left holding on the goto's own point when it arrives: one
+     * DO_REPOSITION per waypoint (`action.goto`), which both autopilots hold at once there
+     * (ArduCopter GUIDED, PX4 Hold after a reposition). [WaypointFlight]'s queue instead sends a
+     * new goto to where the ground last saw the vehicle when the queue runs empty (QueueFlight's
+     * holdHere), a position up to one telemetry period and half a round trip old.
+     */
+    private suspend fun gotoAndHold(log: MutableList<ActionRun>) {
+        for ((k, wp) in waypoints.withIndex()) {
+            rig.vehicle.action.goto(wp)
+            rig.vehicle.telemetry.position.first { p -> p != null && p.location.distanceTo(wp.copy(altitude = p.location.altitude)).meters < ARRIVAL_GROUND_M }
+            settle()
+            act(k, log)
+        }
     }
 
     /**
