@@ -5,6 +5,7 @@ import pod.core.units.Location
 import pod.core.units.m
 import pod.core.vehicle.LandedState
 import kotlin.math.hypot
+import kotlin.time.Duration
 
 /** A snapshot of a simulated vehicle: its physical state and what its autopilot is doing. */
 public data class SimState(
@@ -43,6 +44,8 @@ public data class SimState(
     public val target: Location? = null,
     /** Elevation above mean sea level of the ground straight below it (home's altitude over flat ground). */
     public val groundAltitude: Distance = home.altitude,
+    /** The vehicle's own clock when this snapshot was taken: simulated time since it was made. */
+    public val time: Duration = Duration.ZERO,
 ) {
     /** Height above the ground straight below it: what a downward rangefinder measures. */
     public val heightAboveGround: Distance get() = (location.altitude.meters - groundAltitude.meters).m

@@ -5,6 +5,7 @@ import kotlinx.coroutines.flow.filterNotNull
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.withTimeout
 import pod.bench.RelayedVehicle
+import pod.core.units.Distance
 import pod.core.units.Location
 import pod.core.units.m
 import pod.core.vehicle.Autopilot
@@ -40,8 +41,8 @@ class QueueRig private constructor(
     }
 
     companion object {
-        /** Starts both ends in [scope] under [condition], arms and takes off; bounded (each step by its own timeout). */
-        suspend fun airborne(scope: CoroutineScope, flavour: Autopilot, condition: LinkCondition, seed: Long): QueueRig {
+        /** Starts both ends in [scope] under [condition], arms and takes off to [height]; bounded (each step by its own timeout). */
+        suspend fun airborne(scope: CoroutineScope, flavour: Autopilot, condition: LinkCondition, seed: Long, height: Distance = FLIGHT_HEIGHT): QueueRig {
             // Heartbeats cross the lossy relay too: several in a row go missing now and then at 20 %.
             val gcs = GroundStation.open("udpin://127.0.0.1:0", scope, GroundStationConfig(lostAfter = 30.seconds))
             val config = SimVehicleConfig(systemId = QUEUE_VEHICLE_ID, autopilot = flavour, timeScale = 1.0)
@@ -73,7 +74,7 @@ class QueueRig private constructor(
             try {
                 withTimeout(2.minutes) {
                     rig.vehicle.action.arm()
-                    rig.vehicle.action.takeoff(FLIGHT_HEIGHT)
+                    rig.vehicle.action.takeoff(height)
                 }
             } catch (e: Throwable) {
                 rig.close()

@@ -285,12 +285,49 @@ internal class MissionRunner(private val ap: SimAutopilot) {
                 // waypoint square to the leg (ArduPlane verify_nav_wp, Location::past_interval_finish_line).
                 d < radius || pastFinishLine(target)
             }
-            if (!arrived) return Guidance.GoTo(target)
+            if (!arrived) return Guidance.GoTo(target, through = if (ap.multirotor) throughSpeed(it, target) else 0.0, throughRadius = radius)
             item.arrivedAt = ap.time
             holdAt = target
         }
         val holdFor = if (ap.multirotor) it.param1.toDouble() else 0.0
         return if (ap.time - item.arrivedAt!! < holdFor) Guidance.Loiter(target, 0.0) else null
+    }
+
+    /**
+     * How fast a multirotor flies through waypoint [it] at [target] on to the next, m/s; 0 when it
+     * stops there. Neither autopilot stops at a waypoint without a hold time that another
+     * positional item follows: ArduCopter gives the waypoint controller the next destination
+     * (ArduCopter/mode_auto.cpp, ModeAuto::do_nav_wp → set_next_wp: not when p1 > 0, and only for a
+     * next NAV_WAYPOINT, LOITER_UNLIM or LOITER_TIME; any other next command stops it), and PX4
+     * plans a speed at the waypoint when a next position exists
+     * (src/modules/flight_mode_manager/tasks/Auto, FlightTaskAutoLineSmoothVel::_getSpeedAtTarget),
+     * which only a hold time takes away (src/modules/navigator/mission_block.cpp,
+     * MissionBlock::get_time_inside counts param1 for a rotary wing's NAV_WAYPOINT). That speed is
+     * PX4's corner limit √(a·r·tan(α/2)) (lib/mathlib/math/TrajMath.hpp, computeMaxSpeedInWaypoint,
+     * with MPC_XY_TRAJ_P = 0.5 of the acceleration and the acceptance radius as r), capped by the
+     * cruise speed and by stopping on the next leg; α is the angle at the waypoint, π on a straight
+     * line, where it is the cruise speed. ArduCopter's S-curves round a corner by their own rule;
+     * the same limit stands in for it (the bench flies straight lines).
+     */
+    private fun throughSpeed(it: MissionItem, target: Location): Double {
+        if (it.param1 > 0f) return 0.0
+        val next = items.drop(seq + 1).firstOrNull { n -> n.command in NAV } ?: return 0.0
+        if (next.command !in THROUGH_TO || (next.x == 0 && next.y == 0)) return 0.0
+        val after = location(next)
+        val from = item.legStart ?: ap.body.location.also { l -> item.legStart = l }
+        val (pn, pe) = northEast(target, from)
+        val (nn, ne) = northEast(target, after)
+        val legIn = kotlin.math.hypot(pn, pe)
+        val legOut = kotlin.math.hypot(nn, ne)
+        if (legOut < 1.0 || abs(after.altitude.meters - target.altitude.meters) > 1.0) return 0.0
+        val perf = ap.performance()
+        val cornerSpeed = if (legIn < 1.0) {
+            perf.cruise
+        } else {
+            val alpha = kotlin.math.acos(((pn * nn + pe * ne) / (legIn * legOut)).coerceIn(-1.0, 1.0))
+            kotlin.math.sqrt(0.5 * perf.acceleration * ap.acceptanceRadius(it.param2) * kotlin.math.tan(alpha / 2).coerceAtMost(1e6))
+        }
+        return minOf(perf.cruise, cornerSpeed, kotlin.math.sqrt(2 * perf.acceleration * 0.8 * legOut))
     }
 
     /** Whether the plane is past the line through [target] square to the leg from the previous waypoint. */
@@ -427,5 +464,7 @@ internal class MissionRunner(private val ap: SimAutopilot) {
             NAV_LOITER_TO_ALT, NAV_SPLINE_WAYPOINT, NAV_VTOL_TAKEOFF, NAV_VTOL_LAND, NAV_DELAY, NAV_CONTINUE_AND_CHANGE_ALT,
         )
         private const val MAX_ITEMS_PER_STEP = 64
+        /** The NAV items a multirotor flies a waypoint through to (ArduCopter's ModeAuto::set_next_wp). */
+        private val THROUGH_TO = setOf(NAV_WAYPOINT, NAV_LOITER_UNLIM, NAV_LOITER_TIME)
     }
 }

@@ -25,6 +25,7 @@ import pod.core.units.deg
 import pod.core.units.m
 import kotlin.math.cos
 import kotlin.math.sin
+import kotlin.time.Duration.Companion.seconds
 
 /**
  * The simulated autopilot: modes, arming, commands, missions, parameters and the physics, as a
@@ -118,7 +119,7 @@ internal class SimAutopilot(
         headingDeg = body.heading, charge = charge, armed = armed, landedState = landedState(),
         customMode = FlightModes.customMode(autopilot, type, modeName) ?: 0, modeName = modeName,
         airspeed = body.airspeed, throttle = body.throttle, missionCurrent = missionServer.current, positionReady = positionReady,
-        target = target(), groundAltitude = ground.m,
+        target = target(), groundAltitude = ground.m, time = time.seconds,
     )
 
     private fun target(): Location? = when (val a = activity) {

@@ -13,8 +13,12 @@ internal sealed interface Guidance {
     /** Take off and climb to [altitude]: straight up for a multirotor, along the heading for a plane. */
     data class Climb(val altitude: Double) : Guidance
 
-    /** Fly towards [target] at [speed] m/s (null: the cruise speed); a multirotor stops there. */
-    data class GoTo(val target: Location, val speed: Double? = null) : Guidance
+    /**
+     * Fly towards [target] at [speed] m/s (null: the cruise speed); a multirotor stops there, or,
+     * with [through] > 0, slows down to no less than [through] m/s by [throughRadius] metres from
+     * it (a mission waypoint it turns on to the next from there).
+     */
+    data class GoTo(val target: Location, val speed: Double? = null, val through: Double = 0.0, val throughRadius: Double = 0.0) : Guidance
 
     /**
      * A plane flying the line from [from] to [to] (ArduPlane's crosstrack navigation towards a far

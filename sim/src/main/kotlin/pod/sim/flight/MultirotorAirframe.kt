@@ -33,7 +33,7 @@ internal object MultirotorAirframe : Airframe {
             Guidance.Idle -> Unit
             is Guidance.Climb -> targetAlt = guidance.altitude
             is Guidance.GoTo -> {
-                target = approach(body, northEast(body.location, guidance.target), guidance.speed ?: perf.cruise, perf)
+                target = approach(body, northEast(body.location, guidance.target), guidance.speed ?: perf.cruise, perf, guidance.through, guidance.throughRadius)
                 targetAlt = guidance.target.altitude.meters
             }
             is Guidance.Loiter -> {
@@ -109,12 +109,19 @@ internal object MultirotorAirframe : Airframe {
         )
     }
 
-    /** The velocity that takes the vehicle [offset] (north, east metres) away and stops it there. */
-    private fun approach(body: Body, offset: Pair<Double, Double>, speed: Double, perf: Performance): Pair<Double, Double> {
+    /**
+     * The velocity that takes the vehicle [offset] (north, east metres) away and stops it there, or
+     * when [through] > 0, comes within [throughRadius] of it at [through] m/s.
+     */
+    private fun approach(body: Body, offset: Pair<Double, Double>, speed: Double, perf: Performance, through: Double = 0.0, throughRadius: Double = 0.0): Pair<Double, Double> {
         val (n, e) = offset
         val d = hypot(n, e)
         if (d < 0.05) return 0.0 to 0.0
-        val v = minOf(speed, sqrt(2 * perf.acceleration * 0.8 * d), d / 0.2)
+        val v = if (through > 0) {
+            minOf(speed, sqrt(through * through + 2 * perf.acceleration * 0.8 * (d - throughRadius).coerceAtLeast(0.0)))
+        } else {
+            minOf(speed, sqrt(2 * perf.acceleration * 0.8 * d), d / 0.2)
+        }
         return n / d * v to e / d * v
     }
 
