@@ -57,6 +57,7 @@ private val samples: List<Event> = listOf(
     Event.Released(600.0, listOf(1)),
     Event.Message(600.0, "listing 4: time is up; bringing \"a\" home\n"),
     Event.DemoDone(ok = false, error = "vehicle 3 lost", map = "pod-demo-map.svg"),
+    Event.SurveyDone(ok = true, error = null, photos = 16, detections = 8, flagged = listOf(2, 6), backward = listOf(Event.Measured(6, 30.4), Event.Measured(2, null)), map = "pod-survey-map.svg"),
 )
 
 /** Every `event` name the model knows, read from its serializer (so a new kind must get a sample above). */
