@@ -72,7 +72,8 @@ public suspend fun <T> simulate(
             result to SimRecord(synchronized(events) { events.toList() }, flightsOf(events), tracks.snapshot())
         } finally {
             recording.cancel()
-            if (map != null) map.writeText(svg(flightsOf(events), tracks.snapshot(), "Pod on ${flavors.size} simulated vehicles"))
+            val homes = sim.platform.vehicles.value.mapNotNull { v -> v.home.value?.let { v.id to it } }.toMap()
+            if (map != null) map.writeText(svg(flightsOf(events), tracks.snapshot(), "Pod on ${flavors.size} simulated vehicles", homes))
         }
     } finally {
         sim.close()
@@ -82,10 +83,19 @@ public suspend fun <T> simulate(
 private fun flightsOf(events: List<EngineEvent>): List<Pair<Int, Mission>> =
     synchronized(events) { events.filterIsInstance<EngineEvent.Flying>().map { it.vehicle to it.mission } }
 
-/** The SVG map of [flights] (planned, dashed) and [tracks] (flown, solid). */
-public fun svg(flights: List<Pair<Int, Mission>>, tracks: Map<Int, Pair<String, List<pod.core.units.Location>>>, title: String): String {
+/**
+ * The SVG map of [flights] (planned, dashed) and [tracks] (flown, solid, each named at its end by
+ * its vehicle), with each vehicle's home from [homes] (vehicle id → home) marked.
+ */
+public fun svg(
+    flights: List<Pair<Int, Mission>>,
+    tracks: Map<Int, Pair<String, List<pod.core.units.Location>>>,
+    title: String,
+    homes: Map<Int, pod.core.units.Location> = emptyMap(),
+): String {
     val map = SvgMap()
     flights.distinctBy { it.first to it.second.name }.forEach { (id, mission) -> map.planned(id, mission) }
     tracks.forEach { (id, track) -> map.flown(id, track.first, track.second) }
+    homes.forEach { (id, at) -> map.home(id, at) }
     return map.render(title)
 }

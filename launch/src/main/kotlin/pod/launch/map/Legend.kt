@@ -3,7 +3,7 @@ package pod.launch.map
 import pod.launch.map.MapFrame.Companion.fmt
 
 /** How a legend entry's sample is drawn: the same marker or stroke as the layer it names. */
-internal enum class Swatch { AREA, SOLID, DASHED, DOTTED, DOT, RING, CROSS, NUMBERED }
+internal enum class Swatch { AREA, SOLID, DASHED, DOTTED, DOT, RING, CROSS, NUMBERED, SQUARE }
 
 /** One line of the legend: a sample in [colour] and [label]; [layer] is the id of the layer it names. */
 internal data class LegendEntry(val layer: String, val swatch: Swatch, val colour: String, val label: String)
@@ -46,6 +46,7 @@ internal object Legend {
             Swatch.DOT -> """<circle cx="$cx" cy="$cy" r="2.5" fill="$colour"/>"""
             Swatch.RING -> """<circle cx="$cx" cy="$cy" r="6" fill="none" stroke="$colour" stroke-width="2.5"/>"""
             Swatch.CROSS -> cross(x + 11, y, colour, "")
+            Swatch.SQUARE -> """<rect x="${fmt(x + 7)}" y="${fmt(y - 4)}" width="8" height="8" fill="white" stroke="$colour" stroke-width="2"/>"""
             Swatch.NUMBERED -> line("") +
                 """<circle cx="$cx" cy="$cy" r="4" fill="$colour"/>"""
         }

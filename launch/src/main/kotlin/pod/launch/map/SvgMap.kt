@@ -16,7 +16,7 @@ import kotlin.math.max
  * and the backward path (numbered in the order flown). The canvas is fitted to everything drawn.
  *
  * Each layer is an SVG group whose id names it (`survey-area`, `forward-path`, `photo-waypoints`,
- * `planned`, `flown`, `objects`, `detections`, `backward-path`, `legend`), so a reader or a test can
+ * `planned`, `flown` (with each vehicle's name at its track's end), `homes`, `objects`, `detections`, `backward-path`, `legend`), so a reader or a test can
  * pick it out; the legend's entries name the layer they explain in `data-layer`.
  */
 internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: Int = 700) {
@@ -29,6 +29,7 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
     private var detections: List<Pair<Int, Location>> = emptyList()
     private var objects: List<Location> = emptyList()
     private var backward: List<Pair<Int, Location>> = emptyList()
+    private val homes = sortedMapOf<Int, Location>()
 
     /** Adds [mission]'s path as planned for vehicle [vehicleId]. */
     internal fun planned(vehicleId: Int, mission: Mission) {
@@ -42,6 +43,11 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
             lines += Line(vehicleId, name, points, planned = false)
             vehicleNames[vehicleId] = name
         }
+    }
+
+    /** Marks the home of vehicle [vehicleId]. */
+    internal fun home(vehicleId: Int, at: Location) {
+        homes[vehicleId] = at
     }
 
     /** Sets the surveyed polygon (its vertices, not closed). */
@@ -73,7 +79,7 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
     internal fun render(title: String): String {
         val legend = legendEntries()
         val legendWidth = if (legend.isEmpty()) 0.0 else Legend.WIDTH
-        val content = area + forward.map { it.location } + lines.flatMap { it.points } + objects
+        val content = area + forward.map { it.location } + lines.flatMap { it.points } + objects + homes.values
         val frame = MapFrame(content, maxWidth - 2 * MARGIN - legendWidth, maxHeight - TOP - BOTTOM)
         val width = max(MARGIN + frame.width + MARGIN + legendWidth, MIN_WIDTH)
         val height = max(TOP + frame.height + BOTTOM, TOP + Legend.height(legend) + MARGIN)
@@ -92,6 +98,7 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
             vehicleLayers(px)
             forwardLayers(px)
             markerLayers(px)
+            labelLayers(px)
             Legend.render(this, legend, width - legendWidth, TOP)
             val barMetres = frame.scaleBarMetres(max(frame.width * 0.4, 60.0))
             val bar = barMetres * frame.pixelsPerMetre
@@ -119,6 +126,10 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
                 appendLine("""<polyline class="vehicle-${line.vehicleId}" fill="none" stroke="$colour" $style points="${px.points(line.points)}"><title>${escape(line.label)}</title></polyline>""")
                 if (planned) line.points.forEach { p -> px.pixel(p).let { (x, y) -> appendLine("""<circle cx="${fmt(x)}" cy="${fmt(y)}" r="2.5" fill="$colour"/>""") } }
             }
+            // Each flown track's vehicle named where its track ends.
+            if (!planned) layer.associateBy { it.vehicleId }.forEach { (id, line) -> px.pixel(line.points.last()).let { (x, y) ->
+                appendLine("""<text class="vehicle-label vehicle-$id" x="${fmt(x + 6)}" y="${fmt(y - 6)}" font-family="sans-serif" font-size="11" fill="${colour(id)}">${escape(line.label)}</text>""")
+            } }
             appendLine("</g>")
         }
     }
@@ -135,6 +146,17 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
             forward.forEachIndexed { i, wp ->
                 if (wp.photo) px.pixel(wp.location).let { (x, y) -> appendLine("""<circle class="photo" data-waypoint="$i" cx="${fmt(x)}" cy="${fmt(y)}" r="2.5" fill="$PATH"/>""") }
             }
+            appendLine("</g>")
+        }
+    }
+
+    /** Each home as a small square in its vehicle's colour. */
+    private fun StringBuilder.labelLayers(px: Projection) {
+        if (homes.isNotEmpty()) {
+            appendLine("""<g id="homes">""")
+            homes.forEach { (id, at) -> px.pixel(at).let { (x, y) ->
+                appendLine("""<rect class="home vehicle-$id" x="${fmt(x - 4)}" y="${fmt(y - 4)}" width="8" height="8" fill="white" stroke="${colour(id)}" stroke-width="2"><title>home of ${escape(vehicleNames[id] ?: "vehicle $id")}</title></rect>""")
+            } }
             appendLine("</g>")
         }
     }
@@ -176,6 +198,7 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
         for (id in lines.map { it.vehicleId }.distinct().sorted()) {
             add(LegendEntry("vehicle-$id", Swatch.SOLID, colour(id), vehicleNames[id] ?: "vehicle $id"))
         }
+        if (homes.isNotEmpty()) add(LegendEntry("homes", Swatch.SQUARE, NEUTRAL, "home"))
         if (objects.isNotEmpty()) add(LegendEntry("objects", Swatch.CROSS, OBJECT, "object on the ground"))
         if (detections.isNotEmpty()) add(LegendEntry("detections", Swatch.RING, DETECTION, "waypoint that detected"))
         if (backward.isNotEmpty()) add(LegendEntry("backward-path", Swatch.NUMBERED, BACKWARD, "backward path, in order"))
