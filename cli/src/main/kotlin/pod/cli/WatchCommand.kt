@@ -1,11 +1,13 @@
 package pod.cli
 
 import com.github.ajalt.clikt.core.CliktCommand
+import com.github.ajalt.clikt.core.CliktError
 import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.parameters.options.convert
 import com.github.ajalt.clikt.parameters.options.default
 import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
+import com.github.ajalt.clikt.parameters.types.path
 import kotlinx.coroutines.NonCancellable
 import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.withContext
@@ -13,7 +15,11 @@ import kotlinx.coroutines.withTimeoutOrNull
 import pod.cli.json.Event
 import pod.cli.json.EventJson
 import pod.mavlink.GroundStation
+import pod.launch.Interrupted
+import pod.launch.Interruption
 import pod.mavlink.GroundStationConfig
+import pod.mavlink.tlog.TlogException
+import pod.mavlink.tlog.TlogWriter
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
 
@@ -26,6 +32,8 @@ internal class WatchCommand(private val out: Output) : CliktCommand(name = "watc
         .convert { it.toDurationOrNull() ?: fail(NOT_A_DURATION.format(it)) }
     private val lostAfter by option("--lost-after", help = "silence after which a vehicle is marked lost")
         .convert { it.toDurationOrNull() ?: fail(NOT_A_DURATION.format(it)) }.default(3.seconds)
+    private val record by option("--record", help = "write every frame sent and received to this tlog (MAVProxy's and pymavlink's format)")
+        .path()
 
     override fun help(context: Context): String = "Show the vehicles on a MAVLink link, live."
 
@@ -33,6 +41,16 @@ internal class WatchCommand(private val out: Output) : CliktCommand(name = "watc
         val gcs = reportingLinkErrors {
             GroundStation.open(connect, this, GroundStationConfig(lostAfter = lostAfter))
         }
+        // Opened after the link, so a bad address leaves no empty file behind.
+        val writer = record?.let { path ->
+            try {
+                TlogWriter.create(path)
+            } catch (e: TlogException) {
+                gcs.closeAndAwait()
+                badInput(e.message!!)
+            }
+        }
+        val recording = writer?.let { gcs.record(it) }
         val view = LiveView(out, json)
         if (json) {
             out.line(EventJson.encode(Event.Listening(gcs.link.address.toString(), gcs.link.localPort)))
@@ -41,11 +59,18 @@ internal class WatchCommand(private val out: Output) : CliktCommand(name = "watc
         }
         try {
             val limit = duration
-            if (limit == null) view.show(gcs) else withTimeoutOrNull(limit) { view.show(gcs) }
+            // While recording, Ctrl-C cancels the watch instead of ending the process at once, so
+            // the tlog is flushed and closed below: it ends after a whole record.
+            val watching: suspend () -> Unit = { if (limit == null) view.show(gcs) else withTimeoutOrNull(limit) { view.show(gcs) } }
+            if (writer == null) watching() else Interruption.cancellable { watching() }
             view.finish(gcs)
+        } catch (e: Interrupted) {
+            throw CliktError("pod: stopped by ${e.signal}; ${writer?.records} frames recorded to $record", statusCode = Interruption.EXIT_CODE)
         } finally {
+            recording?.stop()
             // The next command may bind the same udpin port at once: release it before returning.
             withContext(NonCancellable) { gcs.closeAndAwait() }
+            writer?.close()
         }
         gcs.linkError.value?.let { reportingLinkErrors { throw it } }
         Unit

@@ -28,6 +28,13 @@ import pod.mavlink.codec.MessageCodec
 import pod.mavlink.link.LinkException
 import pod.mavlink.link.LinkPeer
 import pod.mavlink.link.MavlinkLink
+import pod.mavlink.tlog.FrameDirection
+import pod.mavlink.tlog.FrameTap
+import pod.mavlink.tlog.Recording
+import pod.mavlink.tlog.TlogWriter
+import java.util.concurrent.CopyOnWriteArrayList
+import java.util.concurrent.atomic.AtomicLong
+import kotlin.time.TimeMark
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
@@ -68,6 +75,8 @@ public class GroundStation private constructor(
     @Volatile private var fromSystemZero = 0L
     @Volatile private var handlerErrors = 0L
     @Volatile private var trackingErrors = 0L
+    private val recordingErrors = AtomicLong()
+    private val taps = CopyOnWriteArrayList<ActiveTap>()
     private val streamRequests = StreamRequests(scope, config, ::linkBroken)
 
     /** Vehicles heard so far by system id, lost ones included (see [MavlinkVehicle.connection]). */
@@ -169,8 +178,47 @@ public class GroundStation private constructor(
         withTimeoutOrNull(within) { link.awaitClosed() }
     }
 
-    private fun encode(message: Any): ByteArray =
-        encoder.encode(message, config.systemId, config.componentId, sequences.next(config.systemId, config.componentId), config.mavlinkVersion)
+    private fun encode(message: Any): ByteArray {
+        val bytes = encoder.encode(message, config.systemId, config.componentId, sequences.next(config.systemId, config.componentId), config.mavlinkVersion)
+        if (taps.isNotEmpty()) tap(FrameDirection.SENT, bytes)
+        return bytes
+    }
+
+    /**
+     * Passes every frame this station sends and receives from now on to [tap], until the returned
+     * [Recording] is stopped (or the station closed). Frames are stamped in microseconds since the
+     * Unix epoch: [startEpochMicros] (the wall clock by default) plus the time elapsed since this
+     * call on the station's clock ([GroundStationConfig.timebase]), so the stamps never go back
+     * and a virtual-time test gets exact ones. Received frames are stamped when parsed, sent ones
+     * when encoded, just before they go out.
+     *
+     * @see record for a tlog
+     */
+    public fun record(tap: FrameTap, startEpochMicros: Long = TlogWriter.wallClockMicros()): Recording {
+        val active = ActiveTap(tap, startEpochMicros, config.clock.markNow())
+        taps += active
+        return Recording { taps.remove(active) }
+    }
+
+    /**
+     * Writes every frame this station sends and receives from now on to [writer], the tlog that
+     * MAVProxy and pymavlink read, until the returned [Recording] is stopped; close [writer] after
+     * stopping. Write failures are counted in [LinkStats.recordingErrors].
+     */
+    public fun record(writer: TlogWriter, startEpochMicros: Long = TlogWriter.wallClockMicros()): Recording =
+        record(FrameTap { t, _, frame -> writer.write(t, frame) }, startEpochMicros)
+
+    private fun tap(direction: FrameDirection, bytes: ByteArray) {
+        for (active in taps) {
+            try {
+                active.tap.onFrame(active.startEpochMicros + active.start.elapsedNow().inWholeMicroseconds, direction, bytes)
+            } catch (e: Exception) {
+                recordingErrors.incrementAndGet()
+            }
+        }
+    }
+
+    private class ActiveTap(val tap: FrameTap, val startEpochMicros: Long, val start: TimeMark)
 
     private inline fun guarded(block: () -> Unit) {
         try {
@@ -193,6 +241,7 @@ public class GroundStation private constructor(
     private fun onBytes(peer: LinkPeer, bytes: ByteArray) {
         val decoder = decoders.decoderFor(peer)
         decoder.feed(bytes) { frame ->
+            if (taps.isNotEmpty()) tap(FrameDirection.RECEIVED, encoder.wireBytes(frame))
             try {
                 route(peer, frame)
             } catch (e: Exception) {
@@ -263,7 +312,7 @@ public class GroundStation private constructor(
 
     private fun publishStats() {
         val t = decoders.totals()
-        _stats.value = LinkStats(t.frames, t.badCrc, t.skippedBytes, t.unknownMessages, unrouted, handlerErrors, t.evictions, trackingErrors, fromSystemZero)
+        _stats.value = LinkStats(t.frames, t.badCrc, t.skippedBytes, t.unknownMessages, unrouted, handlerErrors, t.evictions, trackingErrors, fromSystemZero, recordingErrors.get())
     }
 
     private fun gcsHeartbeat(): Heartbeat = Heartbeat.builder()
@@ -319,4 +368,6 @@ public data class LinkStats(
     public val trackingErrors: Long = 0,
     /** Frames whose sender claimed system id 0, the broadcast address (not routed, never a vehicle). */
     public val fromSystemZero: Long = 0,
+    /** Frames a recording tap failed on (a tlog that could not be written); see [GroundStation.record]. */
+    public val recordingErrors: Long = 0,
 )

@@ -138,6 +138,7 @@ public class FrameDecoder(private val codec: MessageCodec = MessageCodec.Default
                     null
                 },
             )
+            frame.wireChecksum = (buf[checksumAt].toInt() and 0xFF) or ((buf[checksumAt + 1].toInt() and 0xFF) shl 8)
             head = start + frameLength // before the sink runs, so a throwing sink leaves a consistent state
             stats.frames++
             sink(frame)

@@ -72,6 +72,21 @@ public class FrameEncoder(private val codec: MessageCodec = MessageCodec.Default
         )
     }
 
+    /**
+     * The bytes [frame] had on the wire: [encode] with the checksum it arrived with when it came from
+     * a [FrameDecoder] (so frames of unknown message ids come out byte for byte as they came in).
+     */
+    internal fun wireBytes(frame: MavFrame): ByteArray {
+        val bytes = encode(frame)
+        val checksum = frame.wireChecksum
+        if (checksum >= 0) {
+            val at = bytes.size - Wire.CHECKSUM - (frame.signature?.size ?: 0)
+            bytes[at] = checksum.toByte()
+            bytes[at + 1] = (checksum ushr 8).toByte()
+        }
+        return bytes
+    }
+
     /** Payload length without trailing zero bytes, but at least 1 (the MAVLink 2 rule). */
     private fun trimmedLength(payload: ByteArray): Int {
         var length = payload.size

@@ -26,6 +26,12 @@ public class MavFrame(
     /** The 13-byte signature block (link id, 48-bit timestamp, 48-bit signature) or null. */
     public val signature: ByteArray? = null,
 ) {
+    /**
+     * The checksum this frame arrived with, or -1 when it was not decoded from the wire: kept so the
+     * exact bytes can be written again (a tlog) for message ids whose CRC_EXTRA Pod does not know.
+     */
+    internal var wireChecksum: Int = -1
+
     override fun toString(): String =
         "MavFrame(v$version seq=$sequence sys=$systemId comp=$componentId msg=$messageId len=${payload.size})"
 }
