@@ -4,6 +4,9 @@ import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionType
 import pod.mavlink.mission.WplFile
 import pod.mavlink.mission.WplFormatException
+import pod.mavlink.plan.QgcPlan
+import pod.mavlink.plan.QgcPlanFile
+import pod.mavlink.plan.QgcPlanFormatException
 import java.io.IOException
 import java.nio.charset.CharacterCodingException
 import java.nio.file.Files
@@ -34,6 +37,29 @@ internal object LocalFiles {
             badInput("cannot read $name: ${e.message ?: e.javaClass.simpleName}")
         }
     }
+
+    /** The plan in the QGC .plan file [name]. */
+    fun readPlan(name: String): QgcPlan {
+        val path = path(name)
+        if (Files.isDirectory(path)) badInput("$name is a directory, not a .plan file")
+        if (Files.isRegularFile(path) && Files.size(path) > MAX_BYTES) {
+            badInput("$name is too large for a .plan file (${Files.size(path) / 1_048_576} MiB)")
+        }
+        return try {
+            QgcPlanFile.read(path)
+        } catch (e: QgcPlanFormatException) {
+            badInput("$name: ${e.message}")
+        } catch (e: NoSuchFileException) {
+            badInput("no such file: $name")
+        } catch (e: CharacterCodingException) {
+            badInput("$name is not a .plan file: it is not UTF-8 text")
+        } catch (e: IOException) {
+            badInput("cannot read $name: ${e.message ?: e.javaClass.simpleName}")
+        }
+    }
+
+    /** True when [name] names a QGC .plan file (by its extension), false for WPL. */
+    fun isPlan(name: String): Boolean = name.endsWith(".plan", ignoreCase = true)
 
     /**
      * Refuses an output path that cannot be written: a directory, a missing or non-directory

@@ -15,10 +15,15 @@ import kotlinx.coroutines.launch
 import pod.cli.json.Event
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.mission.InvalidMission
+import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionType
 import pod.mavlink.mission.MissionValidation
 import pod.mavlink.mission.TransferProgress
 import pod.mavlink.mission.WplFile
+import pod.mavlink.plan.PlanListException
+import pod.mavlink.plan.PlanLists
+import pod.mavlink.plan.QgcPlan
+import pod.mavlink.plan.QgcPlanFile
 import java.io.IOException
 import java.nio.file.Path
 
@@ -28,7 +33,7 @@ internal class MissionGroup(out: Output) : CliktCommand(name = "mission") {
         subcommands(MissionUpload(out), MissionDownload(out), MissionClear(out))
     }
 
-    override fun help(context: Context): String = "Upload, download or clear a vehicle's mission, fence or rally points (QGC WPL 110 files)."
+    override fun help(context: Context): String = "Upload, download or clear a vehicle's mission, fence or rally points (QGC WPL 110 files, or QGC .plan files for all three at once)."
 
     override fun run() = Unit
 }
@@ -76,43 +81,60 @@ internal abstract class MissionAction(out: Output, name: String) : VehicleComman
     }
 }
 
-/** `pod mission upload FILE`. */
+/** `pod mission upload FILE`: one WPL list, or a .plan file's mission, fence and rally lists. */
 internal class MissionUpload(out: Output) : MissionAction(out, "upload") {
-    private val file by argument(help = "QGC WPL 110 file")
+    private val file by argument(help = "QGC WPL 110 file, or a QGC .plan file (mission, fence and rally; --type is ignored)")
     private val allowEmpty by option("--allow-empty", help = "upload a file with no items, which clears the vehicle's list").flag()
 
-    override fun help(context: Context): String = "Upload a QGC WPL 110 file to a vehicle."
+    override fun help(context: Context): String = "Upload a QGC WPL 110 file, or a QGC .plan file's mission, fence and rally points, to a vehicle."
 
-    private var items: List<pod.mavlink.mission.MissionItem> = emptyList()
+    private var lists: List<Pair<MissionType, List<MissionItem>>> = emptyList()
 
     // The whole file is read and checked as the vehicle would check it before any link is opened.
     override fun prepare() {
-        items = LocalFiles.readWpl(file, type)
-        try {
-            MissionValidation.check(type, items)
-        } catch (e: InvalidMission) {
-            badInput("$file: ${e.message}")
+        lists = if (LocalFiles.isPlan(file)) {
+            // A .plan replaces all three lists, as QGC's upload does: an empty fence or rally list clears the vehicle's.
+            val plan = LocalFiles.readPlan(file)
+            listOf(
+                MissionType.MISSION to plan.mission,
+                MissionType.FENCE to PlanLists.fenceItems(plan.geoFence),
+                MissionType.RALLY to PlanLists.rallyItems(plan.rallyPoints),
+            )
+        } else {
+            listOf(type to LocalFiles.readWpl(file, type))
         }
-        if (items.isEmpty() && !allowEmpty) {
-            badInput("$file holds no items: uploading it would clear the vehicle's ${type.name.lowercase()} list; use 'pod mission clear', or pass --allow-empty")
+        lists.forEach { (type, items) ->
+            try {
+                MissionValidation.check(type, items)
+            } catch (e: InvalidMission) {
+                badInput("$file (${type.name.lowercase()} list): ${e.message}")
+            }
+        }
+        if (lists.all { it.second.isEmpty() } && !allowEmpty) {
+            val which = if (lists.size == 1) "${type.name.lowercase()} list" else "mission, fence and rally lists"
+            badInput("$file holds no items: uploading it would clear the vehicle's $which; use 'pod mission clear', or pass --allow-empty")
         }
     }
 
     override suspend fun act(vehicle: MavlinkVehicle) {
-        withProgress("uploading", vehicle.mission.uploading(items, type))
-        val list = type.name.lowercase()
-        finish(
-            if (items.isEmpty()) "uploaded an empty $list list: cleared the $list list of vehicle ${vehicle.systemId}" else "uploaded ${items(items.size, type)} to vehicle ${vehicle.systemId}",
-            vehicle, action = "upload", items = items.size,
-        )
+        lists.forEach { (type, items) -> withProgress("uploading", vehicle.mission.uploading(items, type)) }
+        val total = lists.sumOf { it.second.size }
+        val message = if (lists.size == 1) {
+            val (type, items) = lists.single()
+            val list = type.name.lowercase()
+            if (items.isEmpty()) "uploaded an empty $list list: cleared the $list list of vehicle ${vehicle.systemId}" else "uploaded ${items(items.size, type)} to vehicle ${vehicle.systemId}"
+        } else {
+            "uploaded ${lists.joinToString(", ") { (type, items) -> items(items.size, type) }} to vehicle ${vehicle.systemId}"
+        }
+        finish(message, vehicle, action = "upload", items = total)
     }
 }
 
 /** `pod mission download FILE`. */
 internal class MissionDownload(out: Output) : MissionAction(out, "download") {
-    private val file by argument(help = "QGC WPL 110 file to write")
+    private val file by argument(help = "QGC WPL 110 file to write, or a .plan file for all three lists (--type is ignored)")
 
-    override fun help(context: Context): String = "Download a vehicle's list into a QGC WPL 110 file."
+    override fun help(context: Context): String = "Download a vehicle's list into a QGC WPL 110 file, or all three lists into a QGC .plan file."
 
     // A path that cannot be written fails now, not after a transfer that may take a minute.
     override fun prepare() {
@@ -120,6 +142,7 @@ internal class MissionDownload(out: Output) : MissionAction(out, "download") {
     }
 
     override suspend fun act(vehicle: MavlinkVehicle) {
+        if (LocalFiles.isPlan(file)) return downloadPlan(vehicle)
         val items = withProgress("downloading", vehicle.mission.downloading(type))?.items.orEmpty()
         try {
             WplFile.write(Path.of(file), items)
@@ -127,6 +150,29 @@ internal class MissionDownload(out: Output) : MissionAction(out, "download") {
             fail("cannot write $file: ${e.message}")
         }
         finish("downloaded ${items(items.size, type)} from vehicle ${vehicle.systemId} to $file", vehicle, action = "download", items = items.size)
+    }
+
+    // All three lists into one .plan file; the vehicle does not store a planned home, so the file has none.
+    private suspend fun downloadPlan(vehicle: MavlinkVehicle) {
+        val lists = listOf(MissionType.MISSION, MissionType.FENCE, MissionType.RALLY).associateWith { type ->
+            withProgress("downloading", vehicle.mission.downloading(type))?.items.orEmpty()
+        }
+        val plan = try {
+            QgcPlan(
+                mission = lists.getValue(MissionType.MISSION),
+                geoFence = PlanLists.fence(lists.getValue(MissionType.FENCE)),
+                rallyPoints = PlanLists.rallyPoints(lists.getValue(MissionType.RALLY)),
+            )
+        } catch (e: PlanListException) {
+            fail("vehicle ${vehicle.systemId}'s lists cannot be written as a .plan file: ${e.message}")
+        }
+        try {
+            QgcPlanFile.write(Path.of(file), plan)
+        } catch (e: IOException) {
+            fail("cannot write $file: ${e.message}")
+        }
+        val summary = lists.entries.joinToString(", ") { (type, items) -> items(items.size, type) }
+        finish("downloaded $summary from vehicle ${vehicle.systemId} to $file", vehicle, action = "download", items = lists.values.sumOf { it.size })
     }
 }
 
