@@ -1,5 +1,8 @@
 package pod.cli
 
+import pod.launch.geo.GeoFeature
+import pod.launch.geo.GeoJson
+import pod.launch.geo.GeoJsonException
 import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionType
 import pod.mavlink.mission.WplFile
@@ -7,6 +10,9 @@ import pod.mavlink.mission.WplFormatException
 import pod.mavlink.plan.QgcPlan
 import pod.mavlink.plan.QgcPlanFile
 import pod.mavlink.plan.QgcPlanFormatException
+import pod.mavlink.tlog.LoggedFlight
+import pod.mavlink.tlog.TlogException
+import pod.mavlink.tlog.TlogTracks
 import java.io.IOException
 import java.nio.charset.CharacterCodingException
 import java.nio.file.Files
@@ -53,6 +59,36 @@ internal object LocalFiles {
             badInput("no such file: $name")
         } catch (e: CharacterCodingException) {
             badInput("$name is not a .plan file: it is not UTF-8 text")
+        } catch (e: IOException) {
+            badInput("cannot read $name: ${e.message ?: e.javaClass.simpleName}")
+        }
+    }
+
+    /** The vehicles' tracks in the tlog [name]; a log cut short or corrupt part way gives what came before, with its error. */
+    fun readTracks(name: String): LoggedFlight {
+        val path = path(name)
+        if (Files.isDirectory(path)) badInput("$name is a directory, not a tlog")
+        if (!Files.exists(path)) badInput("no such file: $name")
+        return try {
+            TlogTracks.read(path)
+        } catch (e: TlogException) {
+            badInput(e.message!!)
+        }
+    }
+
+    /** The features of the GeoJSON file [name]. */
+    fun readGeoJson(name: String): List<GeoFeature> {
+        val path = path(name)
+        if (Files.isDirectory(path)) badInput("$name is a directory, not a GeoJSON file")
+        if (Files.isRegularFile(path) && Files.size(path) > MAX_BYTES) badInput("$name is too large for a GeoJSON file Pod maps (${Files.size(path) / 1_048_576} MiB)")
+        return try {
+            GeoJson.read(Files.readString(path))
+        } catch (e: GeoJsonException) {
+            badInput("$name: ${e.message}")
+        } catch (e: NoSuchFileException) {
+            badInput("no such file: $name")
+        } catch (e: CharacterCodingException) {
+            badInput("$name is not a GeoJSON file: it is not UTF-8 text")
         } catch (e: IOException) {
             badInput("cannot read $name: ${e.message ?: e.javaClass.simpleName}")
         }

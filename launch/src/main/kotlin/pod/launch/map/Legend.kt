@@ -3,7 +3,7 @@ package pod.launch.map
 import pod.launch.map.MapFrame.Companion.fmt
 
 /** How a legend entry's sample is drawn: the same marker or stroke as the layer it names. */
-internal enum class Swatch { AREA, SOLID, DASHED, DOTTED, DOT, RING, CROSS, NUMBERED, SQUARE }
+internal enum class Swatch { AREA, SOLID, DASHED, DOTTED, DOT, RING, CROSS, NUMBERED, SQUARE, FENCE_IN, FENCE_OUT, RALLY }
 
 /** One line of the legend: a sample in [colour] and [label]; [layer] is the id of the layer it names. */
 internal data class LegendEntry(val layer: String, val swatch: Swatch, val colour: String, val label: String)
@@ -47,6 +47,9 @@ internal object Legend {
             Swatch.RING -> """<circle cx="$cx" cy="$cy" r="6" fill="none" stroke="$colour" stroke-width="2.5"/>"""
             Swatch.CROSS -> cross(x + 11, y, colour, "")
             Swatch.SQUARE -> """<rect x="${fmt(x + 7)}" y="${fmt(y - 4)}" width="8" height="8" fill="white" stroke="$colour" stroke-width="2"/>"""
+            Swatch.FENCE_IN -> """<rect x="${fmt(x)}" y="${fmt(y - 6)}" width="22" height="12" fill="$colour" fill-opacity="0.06" stroke="$colour" stroke-width="2" stroke-dasharray="8 4"/>"""
+            Swatch.FENCE_OUT -> """<rect x="${fmt(x)}" y="${fmt(y - 6)}" width="22" height="12" fill="$colour" fill-opacity="0.18" stroke="$colour" stroke-width="1.5"/>"""
+            Swatch.RALLY -> """<circle cx="$cx" cy="$cy" r="7" fill="$colour"/><text x="$cx" y="${fmt(y + 4)}" text-anchor="middle" font-family="sans-serif" font-size="10" font-weight="bold" fill="white">R</text>"""
             Swatch.NUMBERED -> line("") +
                 """<circle cx="$cx" cy="$cy" r="4" fill="$colour"/>"""
         }

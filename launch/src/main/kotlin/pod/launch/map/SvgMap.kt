@@ -6,17 +6,21 @@ import pod.core.survey.SurveyPlan
 import pod.core.survey.SurveyWaypoint
 import pod.core.units.Location
 import pod.launch.map.MapFrame.Companion.fmt
+import pod.core.units.m
 import kotlin.math.max
 
 /**
  * Draws on one SVG map, north up, with a scale bar and a legend: planned missions (dashed, a dot
- * per step) and flown tracks (solid), one colour per vehicle; and a survey's layers — its polygon,
- * the forward path (photographed track legs solid, turnaround and transit legs dotted, a dot per
- * photo waypoint), the waypoints that detected something (rings), objects on the ground (crosses)
- * and the backward path (numbered in the order flown). The canvas is fitted to everything drawn.
+ * per step) and flown tracks (solid), one colour per vehicle; a plan's fence zones (inclusion
+ * outlined green, exclusion filled red), rally points and mission; and a survey's layers — its
+ * polygon, the forward path (photographed track legs solid, turnaround and transit legs dotted, a
+ * dot per photo waypoint), the waypoints that detected something (rings), objects on the ground
+ * (crosses) and the backward path (numbered in the order flown). The canvas is fitted to
+ * everything drawn.
  *
- * Each layer is an SVG group whose id names it (`survey-area`, `forward-path`, `photo-waypoints`,
- * `planned`, `flown` (with each vehicle's name at its track's end), `homes`, `objects`, `detections`, `backward-path`, `legend`), so a reader or a test can
+ * Each layer is an SVG group whose id names it (`fence`, `survey-area`, `plan-mission`, `planned`,
+ * `flown` (with each vehicle's name at its track's end), `forward-path`, `photo-waypoints`,
+ * `rally`, `objects`, `detections`, `backward-path`, `homes`, `legend`), so a reader or a test can
  * pick it out; the legend's entries name the layer they explain in `data-layer`.
  */
 internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: Int = 700) {
@@ -30,6 +34,10 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
     private var objects: List<Location> = emptyList()
     private var backward: List<Pair<Int, Location>> = emptyList()
     private val homes = sortedMapOf<Int, Location>()
+    private class Zone(val inclusion: Boolean, val vertices: List<Location>, val centre: Location?, val radius: Double, val label: String)
+    private val zones = mutableListOf<Zone>()
+    private val rally = mutableListOf<Location>()
+    private val plans = mutableListOf<Pair<String, List<Location>>>()
 
     /** Adds [mission]'s path as planned for vehicle [vehicleId]. */
     internal fun planned(vehicleId: Int, mission: Mission) {
@@ -48,6 +56,26 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
     /** Marks the home of vehicle [vehicleId]. */
     internal fun home(vehicleId: Int, at: Location) {
         homes[vehicleId] = at
+    }
+
+    /** Adds a mission path from a plan, not any one vehicle's: dashed, a dot per item. */
+    internal fun plannedPath(label: String, points: List<Location>) {
+        if (points.size >= 2) plans += label to points
+    }
+
+    /** Adds a fence polygon (vertices, not closed): an area to stay inside when [inclusion], else one to keep out of. */
+    internal fun fence(vertices: List<Location>, inclusion: Boolean, label: String) {
+        zones += Zone(inclusion, vertices, null, 0.0, label)
+    }
+
+    /** Adds a circular fence of [radius] metres around [centre]. */
+    internal fun fenceCircle(centre: Location, radius: Double, inclusion: Boolean, label: String) {
+        zones += Zone(inclusion, emptyList(), centre, radius, label)
+    }
+
+    /** Marks a rally point. */
+    internal fun rallyPoint(at: Location) {
+        rally += at
     }
 
     /** Sets the surveyed polygon (its vertices, not closed). */
@@ -79,7 +107,11 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
     internal fun render(title: String): String {
         val legend = legendEntries()
         val legendWidth = if (legend.isEmpty()) 0.0 else Legend.WIDTH
-        val content = area + forward.map { it.location } + lines.flatMap { it.points } + objects + homes.values
+        val zoneExtent = zones.flatMap { z ->
+            z.vertices + listOfNotNull(z.centre).flatMap { c -> listOf(c.offset(z.radius.m, z.radius.m), c.offset((-z.radius).m, (-z.radius).m)) }
+        }
+        val content = area + forward.map { it.location } + lines.flatMap { it.points } + objects + homes.values +
+            zoneExtent + rally + plans.flatMap { it.second }
         val frame = MapFrame(content, maxWidth - 2 * MARGIN - legendWidth, maxHeight - TOP - BOTTOM)
         val width = max(MARGIN + frame.width + MARGIN + legendWidth, MIN_WIDTH)
         val height = max(TOP + frame.height + BOTTOM, TOP + Legend.height(legend) + MARGIN)
@@ -93,6 +125,7 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
             if (area.isNotEmpty()) {
                 appendLine("""<g id="survey-area"><polygon points="${px.points(area)}" fill="$AREA" fill-opacity="0.2" stroke="$AREA" stroke-width="1.5"/></g>""")
             }
+            zoneLayers(px, frame.pixelsPerMetre)
             // Tracks go under the forward path: a survey's flown track follows the plan, and the
             // plan (with its photo dots) must stay readable on top of it.
             vehicleLayers(px)
@@ -115,7 +148,34 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
         fun points(list: List<Location>): String = list.joinToString(" ") { l -> pixel(l).let { (x, y) -> "${fmt(x)},${fmt(y)}" } }
     }
 
+    /** Fence zones under everything else: inclusion outlined in green, exclusion filled in red. */
+    private fun StringBuilder.zoneLayers(px: Projection, pixelsPerMetre: Double) {
+        if (zones.isEmpty()) return
+        appendLine("""<g id="fence">""")
+        for (z in zones) {
+            val kind = if (z.inclusion) "inclusion" else "exclusion"
+            val style = if (z.inclusion) """fill="$INCLUSION" fill-opacity="0.06" stroke="$INCLUSION" stroke-width="2" stroke-dasharray="8 4"""" else """fill="$EXCLUSION" fill-opacity="0.18" stroke="$EXCLUSION" stroke-width="1.5""""
+            val title = "<title>${escape(z.label)} ($kind)</title>"
+            val centre = z.centre
+            if (centre != null) {
+                val (x, y) = px.pixel(centre)
+                appendLine("""<circle class="fence-$kind" cx="${fmt(x)}" cy="${fmt(y)}" r="${fmt(z.radius * pixelsPerMetre)}" $style>$title</circle>""")
+            } else {
+                appendLine("""<polygon class="fence-$kind" points="${px.points(z.vertices)}" $style>$title</polygon>""")
+            }
+        }
+        appendLine("</g>")
+    }
+
     private fun StringBuilder.vehicleLayers(px: Projection) {
+        if (plans.isNotEmpty()) {
+            appendLine("""<g id="plan-mission">""")
+            for ((label, points) in plans) {
+                appendLine("""<polyline class="plan-path" fill="none" stroke="$PATH" stroke-width="1.5" stroke-dasharray="6 4" points="${px.points(points)}"><title>${escape(label)}</title></polyline>""")
+                points.forEach { p -> px.pixel(p).let { (x, y) -> appendLine("""<circle class="plan-item" cx="${fmt(x)}" cy="${fmt(y)}" r="2.5" fill="$PATH"/>""") } }
+            }
+            appendLine("</g>")
+        }
         for ((planned, group) in listOf(true to "planned", false to "flown")) {
             val layer = lines.filter { it.planned == planned }
             if (layer.isEmpty()) continue
@@ -155,13 +215,21 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
         if (homes.isNotEmpty()) {
             appendLine("""<g id="homes">""")
             homes.forEach { (id, at) -> px.pixel(at).let { (x, y) ->
-                appendLine("""<rect class="home vehicle-$id" x="${fmt(x - 4)}" y="${fmt(y - 4)}" width="8" height="8" fill="white" stroke="${colour(id)}" stroke-width="2"><title>home of ${escape(vehicleNames[id] ?: "vehicle $id")}</title></rect>""")
+                appendLine("""<rect class="home vehicle-$id" x="${fmt(x - 4)}" y="${fmt(y - 4)}" width="8" height="8" fill="white" stroke="${colour(id)}" stroke-width="2"><title>${if (id == 0) "planned home" else "home of " + escape(vehicleNames[id] ?: "vehicle $id")}</title></rect>""")
             } }
             appendLine("</g>")
         }
     }
 
     private fun StringBuilder.markerLayers(px: Projection) {
+        if (rally.isNotEmpty()) {
+            appendLine("""<g id="rally">""")
+            rally.forEachIndexed { i, r -> px.pixel(r).let { (x, y) ->
+                appendLine("""<g class="rally-point"><title>rally point ${i + 1}</title><circle cx="${fmt(x)}" cy="${fmt(y)}" r="7" fill="$RALLY"/>""" +
+                    """<text x="${fmt(x)}" y="${fmt(y + 4)}" text-anchor="middle" font-family="sans-serif" font-size="10" font-weight="bold" fill="white">R</text></g>""")
+            } }
+            appendLine("</g>")
+        }
         if (objects.isNotEmpty()) {
             appendLine("""<g id="objects">""")
             objects.forEach { o -> px.pixel(o).let { (x, y) -> appendLine(cross(x, y, OBJECT, """ class="object"""")) } }
@@ -193,12 +261,16 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
             if (legs(forward).any { !it.first }) add(LegendEntry("forward-path", Swatch.DOTTED, PATH, "turnaround / transit legs"))
             if (forward.any { it.photo }) add(LegendEntry("photo-waypoints", Swatch.DOT, PATH, "photo waypoint"))
         }
+        if (zones.any { it.inclusion }) add(LegendEntry("fence", Swatch.FENCE_IN, INCLUSION, "fence: stay inside"))
+        if (zones.any { !it.inclusion }) add(LegendEntry("fence", Swatch.FENCE_OUT, EXCLUSION, "fence: keep out"))
+        if (plans.isNotEmpty()) add(LegendEntry("plan-mission", Swatch.DASHED, PATH, "planned mission"))
         if (lines.any { it.planned }) add(LegendEntry("planned", Swatch.DASHED, NEUTRAL, "planned mission (dashed)"))
         if (lines.any { !it.planned }) add(LegendEntry("flown", Swatch.SOLID, NEUTRAL, "flown track (solid)"))
         for (id in lines.map { it.vehicleId }.distinct().sorted()) {
             add(LegendEntry("vehicle-$id", Swatch.SOLID, colour(id), vehicleNames[id] ?: "vehicle $id"))
         }
         if (homes.isNotEmpty()) add(LegendEntry("homes", Swatch.SQUARE, NEUTRAL, "home"))
+        if (rally.isNotEmpty()) add(LegendEntry("rally", Swatch.RALLY, RALLY, "rally point"))
         if (objects.isNotEmpty()) add(LegendEntry("objects", Swatch.CROSS, OBJECT, "object on the ground"))
         if (detections.isNotEmpty()) add(LegendEntry("detections", Swatch.RING, DETECTION, "waypoint that detected"))
         if (backward.isNotEmpty()) add(LegendEntry("backward-path", Swatch.NUMBERED, BACKWARD, "backward path, in order"))
@@ -219,8 +291,12 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
         const val DETECTION = "#e6ab02"
         const val BACKWARD = "#c51b8a"
         const val NEUTRAL = "#777777"
+        const val INCLUSION = "#1a9850"
+        const val EXCLUSION = "#d73027"
+        const val RALLY = "#ff7f00"
 
-        fun colour(vehicleId: Int) = PALETTE[(vehicleId - 1).mod(PALETTE.size)]
+        /** A vehicle's colour; id 0 (a plan's planned home, no vehicle's) is neutral. */
+        fun colour(vehicleId: Int) = if (vehicleId == 0) NEUTRAL else PALETTE[(vehicleId - 1).mod(PALETTE.size)]
 
         /**
          * The path through [waypoints] cut into runs of legs of one kind: photographed (along a

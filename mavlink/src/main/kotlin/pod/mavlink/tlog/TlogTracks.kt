@@ -1,0 +1,121 @@
+package pod.mavlink.tlog
+
+import io.dronefleet.mavlink.common.GlobalPositionInt
+import io.dronefleet.mavlink.common.HomePosition
+import io.dronefleet.mavlink.minimal.Heartbeat
+import pod.core.units.Location
+import pod.core.units.m
+import pod.core.vehicle.VehicleType
+import pod.mavlink.MavlinkEnums
+import pod.mavlink.codec.FrameDecoder
+import pod.mavlink.codec.MessageCodec
+import java.nio.file.Path
+
+/**
+ * Where one vehicle flew, as a tlog recorded it: its GLOBAL_POSITION_INT positions in order (a
+ * point whenever it had moved at least the reader's step), its last HOME_POSITION, and its type
+ * from its heartbeat.
+ */
+public data class FlownTrack(
+    /** The vehicle's MAVLink system id. */
+    public val systemId: Int,
+    /** What its heartbeat said it is. */
+    public val type: VehicleType,
+    /** Positions in the order flown, altitudes above mean sea level. */
+    public val points: List<Location>,
+    /** Microseconds since the epoch of each of [points]. */
+    public val timesMicros: List<Long>,
+    /** The home it last reported, if it did. */
+    public val home: Location? = null,
+) {
+    /** A name for maps and legends: `vehicle 1 (copter)`. */
+    public val name: String get() = "vehicle $systemId (${type.name.lowercase()})"
+}
+
+/**
+ * Every vehicle's track in a tlog, and whether the log ended early: [error] is the
+ * [TlogTruncated] or [TlogCorrupt] that stopped reading (the tracks hold everything before it).
+ */
+public data class LoggedFlight(
+    /** One track per vehicle heard (a vehicle HEARTBEAT sender), by system id. */
+    public val tracks: List<FlownTrack>,
+    /** Records read. */
+    public val records: Long,
+    /** Why reading stopped before the end of the file, or null when it was read to the end. */
+    public val error: TlogException? = null,
+)
+
+/** Reads the flown tracks out of a tlog (see [read]). */
+public object TlogTracks {
+    /**
+     * The tracks of every vehicle in the tlog at [path], a point kept whenever the vehicle has moved
+     * [stepMetres] from the last one kept (and always its last position). Frames from ground
+     * stations and other non-vehicles are skipped, as a [pod.mavlink.GroundStation] skips them.
+     * A file that cannot be opened throws [TlogException]; one cut short or corrupt part way gives
+     * what came before, with [LoggedFlight.error] set.
+     */
+    public fun read(path: Path, stepMetres: Double = 1.0, codec: MessageCodec = MessageCodec.Default): LoggedFlight =
+        TlogReader.open(path, codec).use { read(it, stepMetres, codec) }
+
+    /** As [read] for a path, from an open [reader]. */
+    public fun read(reader: TlogReader, stepMetres: Double = 1.0, codec: MessageCodec = MessageCodec.Default): LoggedFlight {
+        require(stepMetres >= 0.0) { "stepMetres must not be negative, was $stepMetres" }
+        val builders = linkedMapOf<Int, Builder>()
+        val decoder = FrameDecoder(codec)
+        var records = 0L
+        val error = try {
+            while (true) {
+                val record = reader.next() ?: break
+                records++
+                decoder.feed(record.frame) { frame ->
+                    when (val message = codec.decode(frame)) {
+                        is Heartbeat -> if (MavlinkEnums.isVehicle(message.type().value(), message.autopilot().value())) {
+                            builders.getOrPut(frame.systemId) { Builder() }.type = MavlinkEnums.vehicleType(message.type().value())
+                        }
+                        is GlobalPositionInt -> builders[frame.systemId]?.add(
+                            Location(message.lat() / 1e7, message.lon() / 1e7, (message.alt() / 1000.0).m),
+                            record.timestampMicros,
+                            stepMetres,
+                        )
+                        is HomePosition -> builders[frame.systemId]?.home =
+                            Location(message.latitude() / 1e7, message.longitude() / 1e7, (message.altitude() / 1000.0).m)
+                    }
+                }
+            }
+            null
+        } catch (e: TlogTruncated) {
+            e
+        } catch (e: TlogCorrupt) {
+            e
+        }
+        return LoggedFlight(builders.map { (id, b) -> b.build(id) }, records, error)
+    }
+
+    private class Builder {
+        var type: VehicleType = VehicleType.OTHER
+        var home: Location? = null
+        val points = mutableListOf<Location>()
+        val times = mutableListOf<Long>()
+        var last: Pair<Location, Long>? = null
+
+        fun add(at: Location, micros: Long, step: Double) {
+            // A vehicle without a fix sends 0,0: never a point of its track.
+            if (at.latitude == 0.0 && at.longitude == 0.0) return
+            last = at to micros
+            if (points.isEmpty() || points.last().distanceTo(at).meters >= step) {
+                points += at
+                times += micros
+            }
+        }
+
+        fun build(id: Int): FlownTrack {
+            // The last position heard always ends the track, even within the step of the last point.
+            val end = last
+            if (end != null && points.last() != end.first) {
+                points += end.first
+                times += end.second
+            }
+            return FlownTrack(id, type, points.toList(), times.toList(), home)
+        }
+    }
+}
