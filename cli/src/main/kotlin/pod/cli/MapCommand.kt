@@ -22,7 +22,7 @@ import java.nio.file.Path
  */
 internal class MapCommand(private val out: Output) : CliktCommand(name = "map") {
     private val inputs by argument("INPUT", help = ".plan, .tlog, .waypoints or .geojson files").multiple(required = true)
-    private val output by option("--out", "-o", help = "the map to write: .svg, .geojson or .kml").required()
+    private val output by option("--out", help = "the map to write: .svg, .geojson or .kml").required()
     private val title by option("--title", help = "the map's title (default: the input file names)")
 
     override fun help(context: Context): String = "Draw plans and flown tracks on a map (SVG, GeoJSON or KML)."
