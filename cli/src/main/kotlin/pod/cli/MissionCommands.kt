@@ -95,6 +95,7 @@ internal class MissionUpload(out: Output) : MissionAction(out, "upload") {
         lists = if (LocalFiles.isPlan(file)) {
             // A .plan replaces all three lists, as QGC's upload does: an empty fence or rally list clears the vehicle's.
             val plan = LocalFiles.readPlan(file)
+            plan.warnings.forEach { if (json) emit(Event.Warning("$file: $it")) else out.line("warning: $file: $it") }
             listOf(
                 MissionType.MISSION to plan.mission,
                 MissionType.FENCE to PlanLists.fenceItems(plan.geoFence),

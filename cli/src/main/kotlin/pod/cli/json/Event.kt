@@ -131,6 +131,10 @@ public sealed interface Event {
     @Serializable @SerialName("error")
     public data class Error(val message: String) : Event
 
+    /** Something in an input file Pod read but changed or could not keep (a .plan's survey read as its expanded items); the command goes on. */
+    @Serializable @SerialName("warning")
+    public data class Warning(val message: String) : Event
+
     /**
      * Ctrl-C or SIGTERM stopped the command ([signal] is `SIGINT` or `SIGTERM`). For a vehicle
      * command: [safe] says whether the vehicle confirmed the safe state described by [state], and

@@ -39,6 +39,7 @@ private val samples: List<Event> = listOf(
     Event.Progress("uploading", 3, 25),
     Event.Done("param-get", 7, "STABILIZE", false, 0.0, items = null, name = "WPNAV_SPEED", value = 500.0, type = "REAL32"),
     Event.Error("vehicle 7 refused: MAV_CMD_COMPONENT_ARM_DISARM was DENIED"),
+    Event.Warning("survey.plan: mission.items[2] is a survey; read as its 14 expanded items"),
     Event.Interrupted("SIGINT", 7, safe = true, state = "holding in BRAKE", mode = "BRAKE", armed = true, relativeAltM = 11.9),
     Event.QueueServing(61, "127.0.0.1:14660", "GUIDED", 20.1),
     Event.QueueStarted(12.5, 61, circleEntry),
