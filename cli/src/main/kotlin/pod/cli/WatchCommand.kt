@@ -62,7 +62,7 @@ internal class WatchCommand(private val out: Output) : CliktCommand(name = "watc
             // While recording, Ctrl-C cancels the watch instead of ending the process at once, so
             // the tlog is flushed and closed below: it ends after a whole record.
             val watching: suspend () -> Unit = { if (limit == null) view.show(gcs) else withTimeoutOrNull(limit) { view.show(gcs) } }
-            if (writer == null) watching() else Interruption.cancellable { watching() }
+            if (writer == null) watching() else Interruption.cancellable("closing the tlog") { watching() }
             view.finish(gcs)
         } catch (e: Interrupted) {
             throw CliktError("pod: stopped by ${e.signal}; ${writer?.records} frames recorded to $record", statusCode = Interruption.EXIT_CODE)

@@ -30,7 +30,8 @@ public object Interruption {
     /** The exit code of a process stopped by a signal: 128 + SIGINT's number, as shells report it. */
     public const val EXIT_CODE: Int = 130
 
-    private val running: MutableSet<Job> = ConcurrentHashMap.newKeySet()
+    /** Work [cancellable] runs now, and what stopping it does, for the person at the terminal. */
+    private val running = ConcurrentHashMap<Job, String>()
     private val signals = AtomicInteger()
     @Volatile private var say: (String) -> Unit = {}
 
@@ -62,23 +63,26 @@ public object Interruption {
             return
         }
         signal = name
-        val work = running.toList()
+        val work = running.entries.map { it.key to it.value }
         if (work.isEmpty()) {
             say("pod: $name: stopped (nothing was flying)")
             exit(EXIT_CODE)
             return
         }
-        say("pod: $name: stopping, making the vehicles safe (press Ctrl-C again to quit at once)")
-        work.forEach { it.cancel(Interrupted(name)) }
+        val doing = work.map { it.second }.distinct().joinToString("; ")
+        say("pod: $name: stopping, $doing (press Ctrl-C again to quit at once)")
+        work.forEach { it.first.cancel(Interrupted(name)) }
     }
 
     /**
      * Runs [block] so that the first signal cancels it with [Interrupted]. Open the links and start
      * the vehicles' services outside [block]: they must still run while the caller makes safe.
+     * [stopping] says what the caller's clean-up then does ("closing the tlog"), as the signal's
+     * message tells the person at the terminal.
      */
-    public suspend fun <T> cancellable(block: suspend CoroutineScope.() -> T): T = coroutineScope {
+    public suspend fun <T> cancellable(stopping: String = MAKING_SAFE, block: suspend CoroutineScope.() -> T): T = coroutineScope {
         val job = coroutineContext.job
-        running += job
+        running[job] = stopping
         try {
             signal?.let { throw Interrupted(it) } // it came before this began
             block()
@@ -86,6 +90,9 @@ public object Interruption {
             running -= job
         }
     }
+
+    /** What stopping a [cancellable] block does unless it says otherwise. */
+    public const val MAKING_SAFE: String = "making the vehicles safe"
 
     /** Forgets every signal and running work (tests only). */
     internal fun reset() {

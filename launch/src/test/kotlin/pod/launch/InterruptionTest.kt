@@ -44,12 +44,23 @@ class InterruptionTest : StringSpec({
             shouldThrow<Interrupted> { work.await() }.signal shouldBe "SIGINT"
             cleanedUp.isCompleted shouldBe true
             exits shouldBe emptyList()
-            said.single() shouldContain "SIGINT: stopping"
+            said.single() shouldBe "pod: SIGINT: stopping, making the vehicles safe (press Ctrl-C again to quit at once)"
             Interruption.signal shouldBe "SIGINT"
 
             Interruption.onSignal("SIGINT", exit = { exits += "exit $it" }, halt = { exits += "halt $it" })
             exits shouldContainExactly listOf("halt 130")
             said.last() shouldContain "quitting now"
+        }
+    }
+
+    "the signal's message says what stopping the running work does" {
+        coroutineScope {
+            val started = CompletableDeferred<Unit>()
+            val work = async { Interruption.cancellable("closing the tlog") { started.complete(Unit); awaitCancellation() } }
+            started.await()
+            Interruption.onSignal("SIGINT", exit = { exits += "exit $it" }, halt = { exits += "halt $it" })
+            shouldThrow<Interrupted> { work.await() }
+            said.single() shouldBe "pod: SIGINT: stopping, closing the tlog (press Ctrl-C again to quit at once)"
         }
     }
 
