@@ -66,6 +66,9 @@ class BadInputSpec : StringSpec({
     }.path
     val script = dir.file("plan.waypoints.main.kts", "println(1)\n")
     val noDir = dir.resolve("no-such-dir").resolve("out.waypoints").path
+    val garbageTlog = dir.resolve("garbage.tlog").also { f -> f.writeBytes(ByteArray(64) { (it * 13 + 1).toByte() }) }.path
+    val badGeoJson = dir.file("bad.geojson", "{\"type\": \"FeatureCollection\", \"features\": [{\"type\": \"Feature\"}]}")
+    val svgOut = dir.resolve("map.svg").path
 
     // Where a vehicle command would look for a vehicle if it got that far: nobody is there.
     fun link(): Array<String> = arrayOf("--connect", "udpin:127.0.0.1:${freePort()}", "--wait", "60s")
@@ -142,12 +145,20 @@ class BadInputSpec : StringSpec({
         case("--frob", "queue", "next", "--frob"),
         case("extra", "queue", "clear", "extra"),
         case("99999", "queue", "status", "--control", "127.0.0.1:99999"),
+        case("INPUT", "map", "--out", svgOut),
+        case("--out", "map", valid),
+        case("map.png", "map", valid, "--out", dir.resolve("map.png").path),
+        case("no-such.tlog", "map", dir.resolve("no-such.tlog").path, "--out", svgOut),
+        case("garbage.tlog", "map", garbageTlog, "--out", svgOut),
+        case("feature 0", "map", badGeoJson, "--out", svgOut),
+        case("notes.md", "map", "notes.md", "--out", svgOut),
+        case("no-such-dir", "map", valid, "--out", dir.resolve("no-such-dir").resolve("map.svg").path),
     )
 
     "every subcommand meets bad arguments and bad files with exit 2 and one line naming the input, before the network" {
         // `pod --help` lists every subcommand; each is exercised above.
         val listed = pod("--help").out.joinToString("\n")
-        for (name in listOf("sim", "watch", "demo", "run", "mission", "param", "arm", "disarm", "mode", "takeoff", "land", "rtl", "goto", "pause", "resume", "start", "queue")) {
+        for (name in listOf("sim", "watch", "demo", "map", "run", "mission", "param", "arm", "disarm", "mode", "takeoff", "land", "rtl", "goto", "pause", "resume", "start", "queue")) {
             withClue("pod --help lists $name") { listed shouldContain name }
             withClue("a bad-input case runs $name") { cases.any { it.args.firstOrNull() == name } shouldBe true }
         }
