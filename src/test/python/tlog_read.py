@@ -2,7 +2,8 @@
 
 Usage: tlog_read.py PATH
 Prints one JSON object per message ("item": message id, sequence, source system and component,
-type, timestamp in microseconds from msg._timestamp), then "end" with the count. Bounded: at
+type, timestamp in microseconds from msg._timestamp; for GLOBAL_POSITION_INT also lat and lon in
+degrees × 10⁷ and alt in mm), then "end" with the count. Bounded: at
 most 1,000,000 messages.
 """
 import json
@@ -21,7 +22,7 @@ def main() -> None:
         if msg is None:
             break
         count += 1
-        print(json.dumps({
+        item = {
             "event": "item",
             "type": msg.get_type(),
             "id": msg.get_msgId(),
@@ -29,7 +30,10 @@ def main() -> None:
             "sys": msg.get_srcSystem(),
             "comp": msg.get_srcComponent(),
             "t_us": int(round(msg._timestamp * 1e6)),
-        }), flush=True)
+        }
+        if msg.get_type() == "GLOBAL_POSITION_INT":
+            item.update(lat=msg.lat, lon=msg.lon, alt=msg.alt)
+        print(json.dumps(item), flush=True)
     print(json.dumps({"event": "end", "count": count}), flush=True)
 
 

@@ -153,12 +153,22 @@ class BadInputSpec : StringSpec({
         case("feature 0", "map", badGeoJson, "--out", svgOut),
         case("notes.md", "map", "notes.md", "--out", svgOut),
         case("no-such-dir", "map", valid, "--out", dir.resolve("no-such-dir").resolve("map.svg").path),
+        case("map.png", "demo", "--map", dir.resolve("map.png").path),
+        case("FILE", "replay"),
+        case("no-such.tlog", "replay", dir.resolve("no-such.tlog").path),
+        case("garbage.tlog", "replay", garbageTlog),
+        case("empty.tlog", "replay", dir.file("empty.tlog", "")),
+        case("is a directory", "replay", dir.path),
+        case("--speed", "replay", garbageTlog, "--speed", "0"),
+        case("fast", "replay", garbageTlog, "--speed", "fast"),
+        case("map.png", "replay", garbageTlog, "--map", dir.resolve("map.png").path),
+        case("forever", "replay", garbageTlog, "--lost-after", "forever"),
     )
 
     "every subcommand meets bad arguments and bad files with exit 2 and one line naming the input, before the network" {
         // `pod --help` lists every subcommand; each is exercised above.
         val listed = pod("--help").out.joinToString("\n")
-        for (name in listOf("sim", "watch", "demo", "map", "run", "mission", "param", "arm", "disarm", "mode", "takeoff", "land", "rtl", "goto", "pause", "resume", "start", "queue")) {
+        for (name in listOf("sim", "watch", "replay", "demo", "map", "run", "mission", "param", "arm", "disarm", "mode", "takeoff", "land", "rtl", "goto", "pause", "resume", "start", "queue")) {
             withClue("pod --help lists $name") { listed shouldContain name }
             withClue("a bad-input case runs $name") { cases.any { it.args.firstOrNull() == name } shouldBe true }
         }

@@ -5,6 +5,7 @@ import io.kotest.engine.spec.tempdir
 import io.kotest.matchers.doubles.plusOrMinus
 import io.kotest.matchers.doubles.shouldBeLessThan
 import io.kotest.matchers.shouldBe
+import io.kotest.matchers.string.shouldStartWith
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.filterNotNull
 import kotlinx.coroutines.launch
@@ -26,6 +27,7 @@ import java.io.File
 import javax.xml.parsers.DocumentBuilderFactory
 import kotlin.math.cos
 import kotlin.math.hypot
+import kotlin.time.Duration.Companion.seconds
 
 /** A square: take off, 40 m out one way, 40 m the other, back home and land. */
 private fun square(v: PlatformVehicle, northFirst: Boolean) = mission("square ${v.name}") {
@@ -54,7 +56,7 @@ private fun distanceToPath(p: Location, path: List<Location>) = path.zipWithNext
  * `pod map`, is the track that station saw live.
  */
 class FlightMapSpec : StringSpec({
-    "a flight recorded to a tlog, mapped with pod map, shows each vehicle's live track and home" {
+    "a flight recorded to a tlog, mapped with pod map or replayed with pod replay --map, shows each vehicle's live track and home" {
         val dir = tempdir()
         val tlog = File(dir, "flight.tlog")
         val live = HashMap<Int, MutableList<Location>>()
@@ -112,6 +114,21 @@ class FlightMapSpec : StringSpec({
             farthest shouldBe (52.0 plusOrMinus 6.0)
             val home = features.single { it.properties["kind"] == MapFeatures.HOME && it.properties["vehicle"] == id.toLong() }
             (home.shape as GeoShape.Point).at.distanceTo(homes.getValue(id)).meters shouldBeLessThan 0.01
+        }
+
+        // Played back with pod replay, the same log draws the same tracks and homes: every frame
+        // reached the replaying station, in order (a dropped or reordered position would move a
+        // thinned point), and its tracks pass within a metre of every live position.
+        val replayed = File(dir, "replay.geojson").path
+        val replay = pod("replay", tlog.path, "--speed", "1000", "--map", replayed, within = 60.seconds)
+        replay.code shouldBe 0
+        replay.out.last() shouldStartWith "replayed ${logged.records} records"
+        replay.out.filter { it.startsWith("found vehicle") }.size shouldBe 2
+        val replayFeatures = GeoJson.read(File(replayed).readText())
+        replayFeatures shouldBe features
+        for ((id, seen) in live) {
+            val track = replayFeatures.single { it.properties["kind"] == MapFeatures.TRACK && it.properties["vehicle"] == id.toLong() }
+            seen.maxOf { distanceToPath(it, (track.shape as GeoShape.Line).points) } shouldBeLessThan 1.0
         }
 
         val svg = File(dir, "flight.svg").path

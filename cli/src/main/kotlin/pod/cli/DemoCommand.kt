@@ -17,6 +17,8 @@ import pod.cli.json.Event
 import pod.cli.json.EventJson
 import pod.cli.json.toEvent
 import pod.launch.Interruption
+import pod.launch.map.MapFormat
+import pod.launch.map.MapFormatUnknown
 import pod.launch.Interrupted
 import pod.dsl.action
 import pod.dsl.and
@@ -42,7 +44,7 @@ internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo"
     private val length by option("--for", help = "how long the fleet keeps two drones on survey, in vehicle time (e.g. 30m)")
         .convert { text -> Duration.parseOrNull(text)?.takeIf { it.isPositive() } ?: fail(NOT_A_DURATION.format(text)) }
         .default(30.minutes)
-    private val map by option("--map", help = "where to write the SVG map").path().default(Path("pod-demo-map.svg"))
+    private val map by option("--map", help = "where to write the map of missions and tracks: .svg, .geojson or .kml").path().default(Path("pod-demo-map.svg"))
     private val json by option("--json", help = "JSON lines instead of text").flag()
 
     override fun help(context: Context): String =
@@ -50,6 +52,11 @@ internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo"
 
     override fun run() = runBlocking {
         // The map is written at the end: a path that cannot take it fails now, not after the flight.
+        try {
+            MapFormat.of(map)
+        } catch (e: MapFormatUnknown) {
+            badInput(e.message!!)
+        }
         LocalFiles.checkWritable(map.toString())
         val view = LiveView(out, json, period = if (json) 20.seconds else 5.seconds)
         var failed: Throwable? = null

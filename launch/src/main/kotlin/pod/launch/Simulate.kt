@@ -7,7 +7,8 @@ import pod.core.engine.EngineEvent
 import pod.core.engine.Program
 import pod.core.mission.Mission
 import pod.core.time.Timebase
-import pod.launch.map.SvgMap
+import pod.launch.geo.MapFeatures
+import pod.launch.map.FlightMap
 import pod.mavlink.GroundStationConfig
 import pod.launch.map.Tracks
 import pod.sim.LinkOpener
@@ -15,7 +16,6 @@ import pod.sim.SimFlavor
 import pod.sim.SimPlatform
 import pod.sim.SimVehicleConfig
 import java.nio.file.Path
-import kotlin.io.path.writeText
 
 /** What [simulate] saw: every engine event, the missions each vehicle flew, the tracks they flew. */
 public class SimRecord(
@@ -29,8 +29,8 @@ public class SimRecord(
 
 /**
  * Runs [program] on a fresh simulated fleet of [flavors] at [timeScale]: prints each event through
- * [onLine] as it happens, writes an SVG map of the planned missions and flown tracks to [map] (if
- * given) and returns the program's result with a [SimRecord] of the run. The fleet is stopped
+ * [onLine] as it happens, writes a map of the planned missions and flown tracks to [map] (if
+ * given; SVG, GeoJSON or KML by its extension, see [FlightMap.write]) and returns the program's result with a [SimRecord] of the run. The fleet is stopped
  * afterwards, however the program ends.
  *
  * The engine, the ground station and the vehicles read [timebase] and the fleet's links are opened
@@ -73,7 +73,7 @@ public suspend fun <T> simulate(
         } finally {
             recording.cancel()
             val homes = sim.platform.vehicles.value.mapNotNull { v -> v.home.value?.let { v.id to it } }.toMap()
-            if (map != null) map.writeText(svg(flightsOf(events), tracks.snapshot(), "Pod on ${flavors.size} simulated vehicles", homes))
+            if (map != null) flightMap(flightsOf(events), tracks.snapshot(), "Pod on ${flavors.size} simulated vehicles", homes).write(map)
         }
     } finally {
         sim.close()
@@ -84,18 +84,27 @@ private fun flightsOf(events: List<EngineEvent>): List<Pair<Int, Mission>> =
     synchronized(events) { events.filterIsInstance<EngineEvent.Flying>().map { it.vehicle to it.mission } }
 
 /**
- * The SVG map of [flights] (planned, dashed) and [tracks] (flown, solid, each named at its end by
- * its vehicle), with each vehicle's home from [homes] (vehicle id → home) marked.
+ * The map of [flights] (planned, dashed) and [tracks] (flown, solid, each named at its end by its
+ * vehicle), with each vehicle's home from [homes] (vehicle id → home) marked: write it as SVG,
+ * GeoJSON or KML.
  */
+public fun flightMap(
+    flights: List<Pair<Int, Mission>>,
+    tracks: Map<Int, Pair<String, List<pod.core.units.Location>>>,
+    title: String,
+    homes: Map<Int, pod.core.units.Location> = emptyMap(),
+): FlightMap {
+    val map = FlightMap(title)
+    flights.distinctBy { it.first to it.second.name }.forEach { (id, mission) -> map.add(MapFeatures.planned(id, mission)) }
+    tracks.forEach { (id, track) -> map.add(MapFeatures.track(id, track.first, track.second)) }
+    homes.forEach { (id, at) -> map.add(listOf(MapFeatures.home(id, tracks[id]?.first ?: "vehicle $id", at))) }
+    return map
+}
+
+/** [flightMap] as an SVG document. */
 public fun svg(
     flights: List<Pair<Int, Mission>>,
     tracks: Map<Int, Pair<String, List<pod.core.units.Location>>>,
     title: String,
     homes: Map<Int, pod.core.units.Location> = emptyMap(),
-): String {
-    val map = SvgMap()
-    flights.distinctBy { it.first to it.second.name }.forEach { (id, mission) -> map.planned(id, mission) }
-    tracks.forEach { (id, track) -> map.flown(id, track.first, track.second) }
-    homes.forEach { (id, at) -> map.home(id, at) }
-    return map.render(title)
-}
+): String = flightMap(flights, tracks, title, homes).svg()

@@ -68,6 +68,25 @@ public sealed interface Event {
         @SerialName("lost_frames") val lostFrames: Long,
     ) : Event
 
+    // ---- pod replay ----
+
+    /** `pod replay` started playing [file] at [speed] times the recorded pace. */
+    @Serializable @SerialName("replaying")
+    public data class Replaying(val file: String, val speed: Finite) : Event
+
+    /**
+     * `pod replay` ended: [records] played, covering [logS] seconds of the log; [error] says why the
+     * log ended early (a record cut short or corrupt), null when it was played to its end; [map] is
+     * the map written, if asked. The last line.
+     */
+    @Serializable @SerialName("replay_done")
+    public data class ReplayDone(
+        val records: Long,
+        @SerialName("log_s") val logS: Finite,
+        val error: String?,
+        val map: String?,
+    ) : Event
+
     // ---- pod sim ----
 
     /** `pod sim` started a vehicle that sends from [localPort] (null before its socket is bound) to [out]. */
@@ -261,7 +280,7 @@ public sealed interface Event {
     @Serializable @SerialName("message")
     public data class Message(val at: Double, val text: String) : Event
 
-    /** `pod demo` ended: [ok], or [error]; [map] is the SVG of missions and tracks. The last line. */
+    /** `pod demo` ended: [ok], or [error]; [map] is the map of missions and tracks written (SVG, GeoJSON or KML). The last line. */
     @Serializable @SerialName("demo_done")
     public data class DemoDone(val ok: Boolean, val error: String?, val map: String) : Event
 

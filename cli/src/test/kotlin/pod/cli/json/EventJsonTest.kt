@@ -58,6 +58,8 @@ private val samples: List<Event> = listOf(
     Event.Released(600.0, listOf(1)),
     Event.Message(600.0, "listing 4: time is up; bringing \"a\" home\n"),
     Event.DemoDone(ok = false, error = "vehicle 3 lost", map = "pod-demo-map.svg"),
+    Event.Replaying("flight.tlog", 10.0),
+    Event.ReplayDone(records = 5120, logS = 312.5, error = "tlog ends inside the record at byte 9000: it needs 29 bytes, 7 are left", map = null),
     Event.SurveyDone(ok = true, error = null, photos = 16, detections = 8, flagged = listOf(2, 6), backward = listOf(Event.Measured(6, 30.4), Event.Measured(2, null)), map = "pod-survey-map.svg"),
 )
 

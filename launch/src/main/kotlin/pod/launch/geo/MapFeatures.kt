@@ -1,5 +1,7 @@
 package pod.launch.geo
 
+import pod.core.mission.Mission
+import pod.core.mission.MissionStep
 import pod.core.units.Location
 import pod.core.units.m
 import pod.mavlink.MavFrames
@@ -11,7 +13,8 @@ import pod.mavlink.tlog.FlownTrack
  * Plans and flown tracks as [GeoFeature]s, for GeoJSON, KML and the SVG map alike.
  *
  * Every feature says what it is in its `kind` property:
- * - `mission`: a Line through the mission's positioned items, in order (`items`: how many);
+ * - `mission`: a Line through the mission's positioned items, in order (`items`: how many;
+ *   `vehicle`: the system id of the vehicle that flies it, for a program's mission);
  * - `fence`: a Polygon, or for a circle a Point with a `radius` in metres; `inclusion` true for an
  *   area to stay inside, false for one to keep out of;
  * - `rally`: a Point;
@@ -80,11 +83,22 @@ public object MapFeatures {
     }
 
     /** [track] as a `track` line (when it has two points or more) and its home, if known. */
-    public fun of(track: FlownTrack): List<GeoFeature> = buildList {
-        if (track.points.size >= 2) {
-            add(GeoFeature(GeoShape.Line(track.points), mapOf("kind" to TRACK, "name" to track.name, "vehicle" to track.systemId.toLong())))
-        }
-        track.home?.let { add(GeoFeature(GeoShape.Point(it), mapOf("kind" to HOME, "name" to "home of ${track.name}", "vehicle" to track.systemId.toLong()))) }
+    public fun of(track: FlownTrack): List<GeoFeature> =
+        track(track.systemId, track.name, track.points) + listOfNotNull(track.home?.let { home(track.systemId, track.name, it) })
+
+    /** Where vehicle [vehicleId], called [name], flew: a `track` line, none for fewer than two [points]. */
+    public fun track(vehicleId: Int, name: String, points: List<Location>): List<GeoFeature> =
+        if (points.size < 2) emptyList() else listOf(GeoFeature(GeoShape.Line(points), mapOf("kind" to TRACK, "name" to name, "vehicle" to vehicleId.toLong())))
+
+    /** The home of vehicle [vehicleId], called [name]. */
+    public fun home(vehicleId: Int, name: String, at: Location): GeoFeature =
+        GeoFeature(GeoShape.Point(at), mapOf("kind" to HOME, "name" to "home of $name", "vehicle" to vehicleId.toLong()))
+
+    /** The path [mission] plans for vehicle [vehicleId]: a `mission` line through its navigation steps (none for fewer than two). */
+    public fun planned(vehicleId: Int, mission: Mission): List<GeoFeature> {
+        val points = mission.steps.filterIsInstance<MissionStep.Navigation>().map { it.location }
+        if (points.size < 2) return emptyList()
+        return listOf(GeoFeature(GeoShape.Line(points), mapOf("kind" to MISSION, "name" to mission.name, "items" to points.size.toLong(), "vehicle" to vehicleId.toLong())))
     }
 
     private fun Double.orZero() = if (isFinite()) this else 0.0

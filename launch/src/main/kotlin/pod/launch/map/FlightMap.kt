@@ -51,7 +51,11 @@ public class FlightMap(
             val vehicle = (f.properties["vehicle"] as? Number)?.toInt()
             val label = f.name ?: kind?.toString() ?: "feature"
             when (val s = f.shape) {
-                is GeoShape.Line -> if (kind == MapFeatures.TRACK && vehicle != null) map.flown(vehicle, label, s.points) else map.plannedPath(label, s.points)
+                is GeoShape.Line -> when {
+                    kind == MapFeatures.TRACK && vehicle != null -> map.flown(vehicle, label, s.points)
+                    vehicle != null -> map.planned(vehicle, label, s.points)
+                    else -> map.plannedPath(label, s.points)
+                }
                 is GeoShape.Polygon -> map.fence(s.vertices, inclusion = f.properties["inclusion"] != false, label)
                 is GeoShape.Point -> {
                     val radius = (f.properties["radius"] as? Number)?.toDouble()

@@ -41,8 +41,12 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
 
     /** Adds [mission]'s path as planned for vehicle [vehicleId]. */
     internal fun planned(vehicleId: Int, mission: Mission) {
-        val points = mission.steps.filterIsInstance<MissionStep.Navigation>().map { it.location }
-        if (points.isNotEmpty()) lines += Line(vehicleId, mission.name, points, planned = true)
+        planned(vehicleId, mission.name, mission.steps.filterIsInstance<MissionStep.Navigation>().map { it.location })
+    }
+
+    /** Adds a path planned for vehicle [vehicleId], called [label]. */
+    internal fun planned(vehicleId: Int, label: String, points: List<Location>) {
+        if (points.isNotEmpty()) lines += Line(vehicleId, label, points, planned = true)
     }
 
     /** Adds a flown track of vehicle [vehicleId], called [name]. */

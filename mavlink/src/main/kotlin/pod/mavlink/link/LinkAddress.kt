@@ -29,6 +29,20 @@ public sealed class LinkAddress {
         override fun toString(): String = "tcp://$hostAndPort"
     }
 
+    /**
+     * A tlog played back as if live ([pod.mavlink.tlog.TlogReplayLink]): it has no host ([host] is
+     * empty) and no port ([port] is 0), and what is sent to it goes nowhere.
+     */
+    public data class Replay(
+        /** The tlog's path. */
+        public val path: String,
+    ) : LinkAddress() {
+        override val host: String get() = ""
+        override val port: Int get() = 0
+
+        override fun toString(): String = "tlog:$path"
+    }
+
     public companion object {
         private val FORM = Regex("""^(udpin|udpout|udp|tcp)(?::/{2}|:)(\[[^\]]+]|[^:/\[\]]*):(\d{1,5})$""")
 

@@ -60,11 +60,13 @@ public interface MavlinkLink {
     public companion object {
         /**
          * Opens a link on [address]: binds or connects now, so a port in use or an unknown host
-         * fails here with [PortInUse] or [HostUnreachable].
+         * fails here with [PortInUse] or [HostUnreachable]. A [LinkAddress.Replay] plays its tlog
+         * back in real time (a missing file throws [pod.mavlink.tlog.TlogException]).
          */
         public suspend fun open(address: LinkAddress): MavlinkLink = when (address) {
             is LinkAddress.UdpIn, is LinkAddress.UdpOut -> UdpLink.open(address)
             is LinkAddress.Tcp -> TcpLink.open(address)
+            is LinkAddress.Replay -> pod.mavlink.tlog.TlogReplayLink.open(java.nio.file.Path.of(address.path))
         }
 
         /** Parses [connection] (see [LinkAddress.parse]) and opens it. */

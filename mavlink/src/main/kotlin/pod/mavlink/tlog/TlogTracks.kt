@@ -59,28 +59,13 @@ public object TlogTracks {
 
     /** As [read] for a path, from an open [reader]. */
     public fun read(reader: TlogReader, stepMetres: Double = 1.0, codec: MessageCodec = MessageCodec.Default): LoggedFlight {
-        require(stepMetres >= 0.0) { "stepMetres must not be negative, was $stepMetres" }
-        val builders = linkedMapOf<Int, Builder>()
-        val decoder = FrameDecoder(codec)
+        val tracks = TrackRecorder(stepMetres, codec)
         var records = 0L
         val error = try {
             while (true) {
                 val record = reader.next() ?: break
                 records++
-                decoder.feed(record.frame) { frame ->
-                    when (val message = codec.decode(frame)) {
-                        is Heartbeat -> if (MavlinkEnums.isVehicle(message.type().value(), message.autopilot().value())) {
-                            builders.getOrPut(frame.systemId) { Builder() }.type = MavlinkEnums.vehicleType(message.type().value())
-                        }
-                        is GlobalPositionInt -> builders[frame.systemId]?.add(
-                            Location(message.lat() / 1e7, message.lon() / 1e7, (message.alt() / 1000.0).m),
-                            record.timestampMicros,
-                            stepMetres,
-                        )
-                        is HomePosition -> builders[frame.systemId]?.home =
-                            Location(message.latitude() / 1e7, message.longitude() / 1e7, (message.altitude() / 1000.0).m)
-                    }
-                }
+                tracks.onFrame(record.timestampMicros, FrameDirection.RECEIVED, record.frame)
             }
             null
         } catch (e: TlogTruncated) {
@@ -88,8 +73,49 @@ public object TlogTracks {
         } catch (e: TlogCorrupt) {
             e
         }
-        return LoggedFlight(builders.map { (id, b) -> b.build(id) }, records, error)
+        return LoggedFlight(tracks.tracks(), records, error)
     }
+}
+
+/**
+ * Collects every vehicle's [FlownTrack] from frames as they pass: what [TlogTracks] reads from a
+ * file, and what a station shows live when given to [pod.mavlink.GroundStation.record]. A point is
+ * kept whenever the vehicle has moved [stepMetres] from the last one kept (and always its last
+ * position). Frames from ground stations and other non-vehicles are skipped, as a
+ * [pod.mavlink.GroundStation] skips them. Thread-safe.
+ */
+public class TrackRecorder(
+    private val stepMetres: Double = 1.0,
+    private val codec: MessageCodec = MessageCodec.Default,
+) : FrameTap {
+    init {
+        require(stepMetres >= 0.0) { "stepMetres must not be negative, was $stepMetres" }
+    }
+
+    private val builders = linkedMapOf<Int, Builder>()
+    private val decoder = FrameDecoder(codec)
+
+    @Synchronized
+    override fun onFrame(timestampMicros: Long, direction: FrameDirection, frame: ByteArray) {
+        decoder.feed(frame) { decoded ->
+            when (val message = codec.decode(decoded)) {
+                is Heartbeat -> if (MavlinkEnums.isVehicle(message.type().value(), message.autopilot().value())) {
+                    builders.getOrPut(decoded.systemId) { Builder() }.type = MavlinkEnums.vehicleType(message.type().value())
+                }
+                is GlobalPositionInt -> builders[decoded.systemId]?.add(
+                    Location(message.lat() / 1e7, message.lon() / 1e7, (message.alt() / 1000.0).m),
+                    timestampMicros,
+                    stepMetres,
+                )
+                is HomePosition -> builders[decoded.systemId]?.home =
+                    Location(message.latitude() / 1e7, message.longitude() / 1e7, (message.altitude() / 1000.0).m)
+            }
+        }
+    }
+
+    /** Every vehicle's track so far, in the order the vehicles were first heard. */
+    @Synchronized
+    public fun tracks(): List<FlownTrack> = builders.map { (id, b) -> b.build(id) }
 
     private class Builder {
         var type: VehicleType = VehicleType.OTHER
@@ -111,11 +137,13 @@ public object TlogTracks {
         fun build(id: Int): FlownTrack {
             // The last position heard always ends the track, even within the step of the last point.
             val end = last
-            if (end != null && points.last() != end.first) {
-                points += end.first
-                times += end.second
-            }
-            return FlownTrack(id, type, points.toList(), times.toList(), home)
+            val tail = end != null && points.last() != end.first
+            return FlownTrack(
+                id, type,
+                if (tail) points + end!!.first else points.toList(),
+                if (tail) times + end!!.second else times.toList(),
+                home,
+            )
         }
     }
 }

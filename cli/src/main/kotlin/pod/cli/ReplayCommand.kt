@@ -1,0 +1,148 @@
+package pod.cli
+
+import com.github.ajalt.clikt.core.CliktCommand
+import com.github.ajalt.clikt.core.CliktError
+import com.github.ajalt.clikt.core.Context
+import com.github.ajalt.clikt.parameters.arguments.argument
+import com.github.ajalt.clikt.parameters.options.convert
+import com.github.ajalt.clikt.parameters.options.default
+import com.github.ajalt.clikt.parameters.options.flag
+import com.github.ajalt.clikt.parameters.options.option
+import com.github.ajalt.clikt.parameters.options.validate
+import com.github.ajalt.clikt.parameters.types.double
+import com.github.ajalt.clikt.parameters.types.path
+import kotlinx.coroutines.NonCancellable
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.runBlocking
+import kotlinx.coroutines.withContext
+import pod.cli.json.Event
+import pod.cli.json.EventJson
+import pod.launch.Interrupted
+import pod.launch.Interruption
+import pod.launch.geo.MapFeatures
+import pod.launch.map.FlightMap
+import pod.launch.map.MapFormat
+import pod.launch.map.MapFormatUnknown
+import pod.launch.map.MapWriteFailed
+import pod.mavlink.GroundStation
+import pod.mavlink.GroundStationConfig
+import pod.mavlink.tlog.TlogCorrupt
+import pod.mavlink.tlog.TlogException
+import pod.mavlink.tlog.TlogReader
+import pod.mavlink.tlog.TlogReplayLink
+import pod.mavlink.tlog.TrackRecorder
+import java.nio.file.Files
+import java.nio.file.Path
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
+import kotlin.time.DurationUnit
+
+/**
+ * `pod replay FILE.tlog`: plays a recorded flight to a ground station as if it were live, showing
+ * what `pod watch` would have shown (the fleet table, or `--json` lines), `--speed` times faster,
+ * and drawing the tracks it saw with `--map`.
+ */
+internal class ReplayCommand(private val out: Output) : CliktCommand(name = "replay") {
+    private val file by argument("FILE", help = "the tlog to play (Pod's, MAVProxy's or pymavlink's)")
+    private val speed by option("--speed", help = "how many times faster than recorded to play it").double().default(1.0)
+        .validate { require(it > 0.0 && it.isFinite() && it <= MAX_SPEED) { "must be a number > 0 and ≤ $MAX_SPEED, was $it" } }
+    private val json by option("--json", help = "one JSON object per event or update, per line").flag()
+    private val map by option("--map", help = "where to write the tracks the replay showed: .svg, .geojson or .kml").path()
+    private val lostAfter by option("--lost-after", help = "log time of silence after which a vehicle is marked lost")
+        .convert { it.toDurationOrNull() ?: fail(NOT_A_DURATION.format(it)) }.default(3.seconds)
+
+    override fun help(context: Context): String = "Play a recorded tlog to a ground station as if live."
+
+    override fun run() = runBlocking {
+        // The map is written at the end: a path that cannot take it fails now, not after the replay.
+        map?.let { target ->
+            try {
+                MapFormat.of(target)
+            } catch (e: MapFormatUnknown) {
+                badInput(e.message!!)
+            }
+            LocalFiles.checkWritable(target.toString())
+        }
+        val path = checkedTlog()
+        val link = try {
+            TlogReplayLink.open(path, speed)
+        } catch (e: TlogException) {
+            badInput(e.message!!)
+        }
+        // A log cannot answer: the station asks it for nothing. Silence is measured in log time,
+        // but never less than 50 ms of real time, so a pause of this process is not a lost vehicle.
+        val config = GroundStationConfig(lostAfter = maxOf(lostAfter / speed, 50.milliseconds), streamRates = emptyMap(), requestHome = false, requestPayloads = false)
+        val gcs = GroundStation.open(link, this, config)
+        val tracks = TrackRecorder()
+        val recording = gcs.record(tracks)
+        val view = LiveView(out, json)
+        if (json) out.line(EventJson.encode(Event.Replaying(file, speed))) else view.note("replaying $file at ${speed}x")
+        try {
+            val playing: suspend () -> Unit = {
+                coroutineScope {
+                    val shown = launch { view.show(gcs) }
+                    link.progress.first { it.finished }
+                    shown.cancel()
+                }
+            }
+            // With a map to write, Ctrl-C ends the replay and the map still shows what was played.
+            if (map == null) playing() else Interruption.cancellable("writing the map") { playing() }
+            view.finish(gcs)
+        } catch (e: Interrupted) {
+            view.stop()
+            writeMap(tracks)
+            throw CliktError("pod: stopped by ${e.signal}; ${link.progress.value.records} records played${map?.let { "; map so far: $it" } ?: ""}", statusCode = Interruption.EXIT_CODE)
+        } finally {
+            recording.stop()
+            withContext(NonCancellable) { gcs.closeAndAwait() }
+        }
+        writeMap(tracks)
+        val done = link.progress.value
+        val logSeconds = done.logTime.toDouble(DurationUnit.SECONDS)
+        if (json) {
+            out.line(EventJson.encode(Event.ReplayDone(done.records, logSeconds, done.error?.message, map?.toString())))
+        } else {
+            done.error?.let { out.line("warning: $file: ${it.message}; played the ${done.records} records before it") }
+            out.line("replayed ${done.records} records, %.1f s of log, from $file".format(java.util.Locale.ROOT, logSeconds) + (map?.let { "; map: $it" } ?: ""))
+        }
+        // A record cut short ends most logs whose recorder was killed: what came before is whole.
+        // Bytes that are not a frame part way through are damage: the rest of the log is lost.
+        if (done.error is TlogCorrupt) throw CliktError("error: $file is corrupt: ${done.error!!.message}", statusCode = Exit.FAILED)
+    }
+
+    /** The tlog to play: an existing file that starts with one whole record. */
+    private fun checkedTlog(): Path {
+        val path = try {
+            Path.of(file)
+        } catch (e: java.nio.file.InvalidPathException) {
+            badInput("cannot read $file: ${e.message}")
+        }
+        if (Files.isDirectory(path)) badInput("$file is a directory, not a tlog")
+        if (!Files.exists(path)) badInput("no such file: $file")
+        try {
+            TlogReader.open(path).use { it.next() } ?: badInput("$file is empty: no tlog record to play")
+        } catch (e: TlogException) {
+            // Not one whole record: not a tlog at all, rather than one cut short.
+            badInput("$file is not a tlog: ${e.message}")
+        }
+        return path
+    }
+
+    private fun writeMap(tracks: TrackRecorder) {
+        val target = map ?: return
+        val drawn = FlightMap("replay of ${Path.of(file).fileName}")
+        tracks.tracks().forEach { drawn.add(MapFeatures.of(it)) }
+        try {
+            drawn.write(target)
+        } catch (e: MapWriteFailed) {
+            badInput(e.message!!)
+        }
+    }
+
+    private companion object {
+        /** Faster than this, the station's silence checks (a quarter of `--lost-after`) cannot keep up with log time. */
+        const val MAX_SPEED = 1000.0
+    }
+}

@@ -1,0 +1,134 @@
+package pod.mavlink.tlog
+
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.asStateFlow
+import kotlinx.coroutines.flow.update
+import pod.core.time.Timebase
+import pod.mavlink.codec.MessageCodec
+import pod.mavlink.link.LinkAddress
+import pod.mavlink.link.LinkPeer
+import pod.mavlink.link.MavlinkLink
+import java.nio.file.Path
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.microseconds
+import kotlin.time.TimeMark
+
+/**
+ * A tlog played back as a link: a [pod.mavlink.GroundStation] opened on it hears every recorded
+ * frame at the moment it was recorded, [speed] times faster, and shows the vehicles in the log as
+ * if they were live. What the station sends goes nowhere: a log cannot answer.
+ *
+ * Records are due at `(timestamp − first timestamp) / speed` after [receive] starts, on
+ * [timebase]'s clock (a test passes a virtual one). A record stamped earlier than one before it (a
+ * recorder whose clock stepped back) is delivered at once, never reordered. [receive] returns
+ * when the log has been played to its end, or cut short by a [TlogTruncated] or [TlogCorrupt]
+ * record, or when the link is [close]d; [progress] tells which.
+ *
+ * All frames arrive from one peer, [RECORDING]: a tlog keeps no source addresses.
+ */
+public class TlogReplayLink private constructor(
+    private val reader: TlogReader,
+    path: Path,
+    /** How many times faster than recorded the log plays: 1 is real time. */
+    public val speed: Double,
+    private val timebase: Timebase,
+) : MavlinkLink {
+    init {
+        require(speed > 0.0 && speed.isFinite()) { "speed must be a finite number > 0, was $speed" }
+    }
+
+    @Volatile private var closed = false
+    private var receiving = false
+    private val _progress = MutableStateFlow(ReplayProgress())
+
+    override val address: LinkAddress = LinkAddress.Replay(path.toString())
+
+    /** A log binds no port: 0. */
+    override val localPort: Int = 0
+
+    /** Nobody hears what is sent: a log has no peers to reach. */
+    override val peers: Collection<LinkPeer> = emptyList()
+
+    override val sendsInPlace: Boolean get() = true
+
+    /** How far the replay has got. */
+    public val progress: StateFlow<ReplayProgress> = _progress.asStateFlow()
+
+    override suspend fun receive(onBytes: (peer: LinkPeer, bytes: ByteArray) -> Unit) {
+        synchronized(this) {
+            check(!receiving) { "$address is being played already" }
+            if (closed) return
+            receiving = true
+        }
+        var first: Long? = null
+        var started: TimeMark? = null
+        try {
+            while (!closed) {
+                val record = reader.next() ?: break
+                val t0 = first ?: record.timestampMicros.also { first = it }
+                val start = started ?: timebase.clock.markNow().also { started = it }
+                val logTime = (record.timestampMicros - t0).coerceAtLeast(0).microseconds
+                val wait = logTime / speed - start.elapsedNow()
+                if (wait.isPositive()) delay(wait)
+                if (closed) break
+                onBytes(RECORDING, record.frame)
+                _progress.update { it.copy(records = it.records + 1, logTime = maxOf(it.logTime, logTime)) }
+            }
+            _progress.update { it.copy(finished = true) }
+        } catch (e: TlogException) {
+            // A cut or corrupt record ends the replay where it is; what came before was played.
+            _progress.update { it.copy(finished = true, error = e) }
+        } finally {
+            reader.close()
+        }
+    }
+
+    /** Discards [bytes]: a recording cannot be talked to. */
+    override suspend fun send(bytes: ByteArray, peer: LinkPeer) {}
+
+    /** Discards [bytes], as [send]. */
+    override fun sendNow(bytes: ByteArray, peer: LinkPeer) {}
+
+    override fun close() {
+        val idle = synchronized(this) {
+            closed = true
+            !receiving
+        }
+        // A replay that never started still holds the file; one that did closes it as it returns.
+        if (idle) reader.close()
+    }
+
+    public companion object {
+        /** The one peer every replayed frame comes from. */
+        public val RECORDING: LinkPeer = LinkPeer("tlog")
+
+        /**
+         * Opens the tlog at [path] for replay at [speed] on [timebase]. A file that cannot be opened
+         * throws [TlogException]; a [speed] that is not a finite number > 0 throws
+         * [IllegalArgumentException].
+         */
+        public fun open(
+            path: Path,
+            speed: Double = 1.0,
+            timebase: Timebase = Timebase.System,
+            codec: MessageCodec = MessageCodec.Default,
+        ): TlogReplayLink {
+            require(speed > 0.0 && speed.isFinite()) { "speed must be a finite number > 0, was $speed" }
+            return TlogReplayLink(TlogReader.open(path, codec), path, speed, timebase)
+        }
+    }
+}
+
+/** How far a [TlogReplayLink] has played its log. */
+public data class ReplayProgress(
+    /** Records delivered so far. */
+    public val records: Long = 0,
+    /** Log time of the latest record delivered, from the first record's timestamp. */
+    public val logTime: Duration = Duration.ZERO,
+    /** Whether the replay has ended: the log was played to its end or up to [error]. */
+    public val finished: Boolean = false,
+    /** The cut or corrupt record that ended the replay early, or null. */
+    public val error: TlogException? = null,
+)
