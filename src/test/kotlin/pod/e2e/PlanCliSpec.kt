@@ -13,6 +13,7 @@ import kotlinx.coroutines.withContext
 import pod.cli.Pod
 import pod.cli.json.Event
 import pod.core.vehicle.Autopilot
+import pod.mavlink.mission.ArduPilotMissionStorage
 import pod.mavlink.mission.MissionType
 import pod.mavlink.plan.FenceCircle
 import pod.mavlink.plan.FencePolygon
@@ -24,6 +25,8 @@ import pod.mavlink.plan.QgcPlan
 import pod.mavlink.plan.QgcPlanFile
 import pod.sim.SimVehicle
 import pod.sim.SimVehicleConfig
+import kotlinx.serialization.json.JsonPrimitive
+import java.io.File
 import java.nio.file.Files
 import kotlin.io.path.writeText
 
@@ -69,6 +72,63 @@ class PlanCliSpec : StringSpec({
             } finally {
                 sim.stop()
                 dir.toFile().deleteRecursively()
+            }
+        }
+    }
+
+    // QGC's own plan files (mavlink/src/test/resources/plans, sources in its README) through a vehicle and back.
+    for ((name, autopilot) in listOf("ArduPilotSITL-ArduCopter.plan" to Autopilot.ARDUPILOT, "ce_geofence_home_base.plan" to Autopilot.PX4)) {
+        "QGC's $name loads, uploads to a simulated $autopilot vehicle and downloads equal to what the autopilot keeps" {
+            val file = generateSequence(File(System.getProperty("user.dir")).absoluteFile) { it.parentFile }
+                .map { File(it, "mavlink/src/test/resources/plans/$name") }.first { it.isFile }
+            val read = QgcPlanFile.read(file.toPath())
+            coroutineScope {
+                val port = freePort()
+                val sim = SimVehicle(SimVehicleConfig(systemId = 17, autopilot = autopilot, gcs = "udpout://127.0.0.1:$port"))
+                val dir = Files.createTempDirectory("pod-qgc-plan")
+                try {
+                    sim.start(this)
+                    val connect = listOf("--connect", "udpin:127.0.0.1:$port", "--json")
+                    val terrainItems = read.mission.filter { it.z.isNaN() && read.itemExtras[it.seq]?.get("AltitudeMode") == JsonPrimitive(3) }
+                    val plan = if (terrainItems.isEmpty()) {
+                        read
+                    } else {
+                        // As it is, the file names the items QGC would fill from terrain data, and nothing is sent.
+                        val out = Captured()
+                        val refused = shouldThrow<CliktError> { withContext(Dispatchers.IO) { Pod(out).parse(listOf("mission", "upload", file.path) + connect) } }
+                        refused.statusCode shouldBe 2
+                        refused.message!! shouldContain "item ${terrainItems[0].seq}"
+                        out.events.filterIsInstance<Event.Warning>().single().message shouldContain "AltitudeMode 3"
+                        sim.missionServer.list(MissionType.MISSION) shouldBe emptyList()
+                        // What QGC sends over flat ground at the planned home's elevation: 80 m above it, AMSL.
+                        val ground = read.plannedHome!!.altitude.toFloat()
+                        read.copy(mission = read.mission.map { if (it in terrainItems) it.copy(z = ground + 80f) else it }, warnings = emptyList())
+                    }
+                    val upload = dir.resolve("upload.plan").also { QgcPlanFile.write(it, plan) }
+                    withContext(Dispatchers.IO) { Pod(Captured()).parse(listOf("mission", "upload", upload.toString()) + connect) }
+                    val download = dir.resolve("back.plan")
+                    withContext(Dispatchers.IO) { Pod(Captured()).parse(listOf("mission", "download", download.toString()) + connect) }
+                    val back = QgcPlanFile.read(download)
+                    // ArduPilot normalises what it stores (unused params and NaNs to 0, a DO_ command's
+                    // frame to 0), and keeps its home in item 0, ahead of the plan's items, as QGC sends them.
+                    val kept = if (autopilot == Autopilot.ARDUPILOT) ArduPilotMissionStorage.stored(plan.mission, fixedWing = false) else plan.mission
+                    back.mission shouldBe kept
+                    if (autopilot == Autopilot.ARDUPILOT) {
+                        sim.missionServer.list(MissionType.MISSION).map { it.command } shouldBe listOf(16) + plan.mission.map { it.command }
+                        // What comes back as the planned home is the vehicle's, which ArduPilot writes over item 0.
+                        val home = SimVehicleConfig.DEFAULT_HOME
+                        back.plannedHome!!.let { listOf(it.latitude, it.longitude, it.altitude) } shouldBe listOf(home.latitude, home.longitude, home.altitude.meters)
+                    } else {
+                        back.plannedHome shouldBe null
+                    }
+                    // Fence and rally travel as degrees × 10⁷: the plan's vertices come back rounded to that.
+                    back.geoFence shouldBe PlanLists.fence(PlanLists.fenceItems(plan.geoFence))
+                    back.rallyPoints shouldBe PlanLists.rallyPoints(PlanLists.rallyItems(plan.rallyPoints))
+                    sim.missionServer.list(MissionType.FENCE).size shouldBe plan.geoFence.polygons.sumOf { it.vertices.size } + plan.geoFence.circles.size
+                } finally {
+                    sim.stop()
+                    dir.toFile().deleteRecursively()
+                }
             }
         }
     }

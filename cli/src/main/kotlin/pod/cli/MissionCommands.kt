@@ -20,8 +20,9 @@ import pod.mavlink.mission.MissionType
 import pod.mavlink.mission.MissionValidation
 import pod.mavlink.mission.TransferProgress
 import pod.mavlink.mission.WplFile
+import pod.core.vehicle.Autopilot
 import pod.mavlink.plan.PlanListException
-import pod.mavlink.plan.PlanLists
+import pod.mavlink.plan.PlanOnVehicle
 import pod.mavlink.plan.QgcPlan
 import pod.mavlink.plan.QgcPlanFile
 import java.io.IOException
@@ -89,18 +90,17 @@ internal class MissionUpload(out: Output) : MissionAction(out, "upload") {
     override fun help(context: Context): String = "Upload a QGC WPL 110 file, or a QGC .plan file's mission, fence and rally points, to a vehicle."
 
     private var lists: List<Pair<MissionType, List<MissionItem>>> = emptyList()
+    private var plan: QgcPlan? = null
 
     // The whole file is read and checked as the vehicle would check it before any link is opened.
     override fun prepare() {
         lists = if (LocalFiles.isPlan(file)) {
             // A .plan replaces all three lists, as QGC's upload does: an empty fence or rally list clears the vehicle's.
-            val plan = LocalFiles.readPlan(file)
-            plan.warnings.forEach { if (json) emit(Event.Warning("$file: $it")) else out.line("warning: $file: $it") }
-            listOf(
-                MissionType.MISSION to plan.mission,
-                MissionType.FENCE to PlanLists.fenceItems(plan.geoFence),
-                MissionType.RALLY to PlanLists.rallyItems(plan.rallyPoints),
-            )
+            val read = LocalFiles.readPlan(file)
+            read.warnings.forEach { if (json) emit(Event.Warning("$file: $it")) else out.line("warning: $file: $it") }
+            plan = read
+            // Checked as the file numbers its items; an ArduPilot vehicle gets a home item before them (act).
+            PlanOnVehicle.lists(read, Autopilot.PX4)
         } else {
             listOf(type to LocalFiles.readWpl(file, type))
         }
@@ -118,6 +118,7 @@ internal class MissionUpload(out: Output) : MissionAction(out, "upload") {
     }
 
     override suspend fun act(vehicle: MavlinkVehicle) {
+        plan?.let { lists = PlanOnVehicle.lists(it, vehicle.identity.value.autopilot) }
         lists.forEach { (type, items) -> withProgress("uploading", vehicle.mission.uploading(items, type)) }
         val total = lists.sumOf { it.second.size }
         val message = if (lists.size == 1) {
@@ -153,17 +154,13 @@ internal class MissionDownload(out: Output) : MissionAction(out, "download") {
         finish("downloaded ${items(items.size, type)} from vehicle ${vehicle.systemId} to $file", vehicle, action = "download", items = items.size)
     }
 
-    // All three lists into one .plan file; the vehicle does not store a planned home, so the file has none.
+    // All three lists into one .plan file; ArduPilot's mission item 0 is its home, the file's planned home.
     private suspend fun downloadPlan(vehicle: MavlinkVehicle) {
         val lists = listOf(MissionType.MISSION, MissionType.FENCE, MissionType.RALLY).associateWith { type ->
             withProgress("downloading", vehicle.mission.downloading(type))?.items.orEmpty()
         }
         val plan = try {
-            QgcPlan(
-                mission = lists.getValue(MissionType.MISSION),
-                geoFence = PlanLists.fence(lists.getValue(MissionType.FENCE)),
-                rallyPoints = PlanLists.rallyPoints(lists.getValue(MissionType.RALLY)),
-            )
+            PlanOnVehicle.plan(lists.getValue(MissionType.MISSION), lists.getValue(MissionType.FENCE), lists.getValue(MissionType.RALLY), vehicle.identity.value.autopilot)
         } catch (e: PlanListException) {
             fail("vehicle ${vehicle.systemId}'s lists cannot be written as a .plan file: ${e.message}")
         }

@@ -18,6 +18,7 @@ internal object QgcPlanReader {
     private val rootKeys = setOf("fileType", "version", "groundStation", "mission", "geoFence", "rallyPoints")
     private val missionKeys = setOf("version", "firmwareType", "vehicleType", "cruiseSpeed", "hoverSpeed", "items", "plannedHomePosition")
     private val itemKeys = setOf("type", "command", "frame", "autoContinue", "params")
+    private const val ALT_MODE_CALC_ABOVE_TERRAIN = 3
 
     fun read(text: String): QgcPlan {
         val root = try {
@@ -37,13 +38,13 @@ internal object QgcPlanReader {
         mission.field("items").array().forEach { entry ->
             val fields = entry.obj()
             when (val type = fields.field("type").string()) {
-                "SimpleItem" -> simple(fields, items, itemExtras)
+                "SimpleItem" -> simple(fields, items, itemExtras, warnings)
                 "ComplexItem" -> {
                     val kind = fields.optional("complexItemType")?.string() ?: "?"
                     val expanded = fields.optional("TransectStyleComplexItem")?.obj()?.optional("Items")?.array()
                         ?: entry.fail("complex item '$kind' has no TransectStyleComplexItem.Items: Pod cannot expand it")
                     val first = items.size
-                    expanded.forEach { simple(it.obj(), items, itemExtras) }
+                    expanded.forEach { simple(it.obj(), items, itemExtras, warnings) }
                     warnings += "${entry.path}: $kind complex item read as its ${expanded.size} expanded items " +
                         "(mission seq $first..${items.size - 1}); its polygon and settings are not kept"
                 }
@@ -73,7 +74,7 @@ internal object QgcPlanReader {
         )
     }
 
-    private fun simple(fields: ObjectNode, items: MutableList<MissionItem>, extras: MutableMap<Int, JsonObject>) {
+    private fun simple(fields: ObjectNode, items: MutableList<MissionItem>, extras: MutableMap<Int, JsonObject>, warnings: MutableList<String>) {
         val seq = items.size
         val frame = fields.field("frame").int(0, 255)
         val params = fields.field("params").array()
@@ -92,6 +93,15 @@ internal object QgcPlanReader {
             z = params[6].float(),
             missionType = MissionType.MISSION,
         )
+        // QGC's AltitudeModeCalcAboveTerrain (3): the file holds the height above terrain ("Altitude")
+        // and a null altitude param; QGC sends terrain + height AMSL, from its terrain tiles, only
+        // when it uploads (QGroundControl MissionItem / SimpleMissionItem, AltMode enum).
+        val altitudeMode = fields.optional("AltitudeMode")?.json
+        if (altitudeMode == JsonPrimitive(ALT_MODE_CALC_ABOVE_TERRAIN) && items.last().z.isNaN()) {
+            val height = fields.optional("Altitude")?.json?.let { (it as? JsonPrimitive)?.content } ?: "?"
+            warnings += "${fields.path}: altitude $height m above terrain, which QGC calculates from its terrain data as it " +
+                "uploads (AltitudeMode 3); the file holds no altitude for it, so it cannot be uploaded as it is"
+        }
         // doJumpId is QGC's 1-based numbering: kept only where it differs from what writing would produce.
         val kept = fields.json.filter { (key, value) ->
             key !in itemKeys && !(key == "doJumpId" && value == JsonPrimitive(seq + 1))

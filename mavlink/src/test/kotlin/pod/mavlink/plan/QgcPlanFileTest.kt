@@ -74,7 +74,10 @@ class QgcPlanFileTest : StringSpec({
     // MissionItem is a data class: its Float fields compare with Float.compare, so NaN equals NaN and -0 ≠ 0.
     "random plans with NaN params, fences and rally points write and read back equal" {
         checkAll(PropTestConfig(seed = 16), plans) { plan ->
-            QgcPlanFile.read(QgcPlanFile.write(plan)) shouldBe plan
+            val back = QgcPlanFile.read(QgcPlanFile.write(plan))
+            back.copy(warnings = emptyList()) shouldBe plan
+            // A warning for each item whose altitude QGC would compute from terrain, and only those.
+            back.warnings.size shouldBe plan.mission.count { it.z.isNaN() && plan.itemExtras[it.seq]?.get("AltitudeMode") == JsonPrimitive(3) }
         }
     }
 
@@ -96,7 +99,11 @@ class QgcPlanFileTest : StringSpec({
         plan.hoverSpeed shouldBe 5.0
         plan.itemExtras[3]?.get("AltitudeMode") shouldBe JsonPrimitive(2)
         plan.missionExtras["globalPlanAltitudeMode"] shouldBe JsonPrimitive(0)
-        plan.warnings shouldBe emptyList()
+        // Item 5's altitude is QGC's to calculate from terrain as it uploads: the file has none.
+        plan.warnings shouldBe listOf(
+            "mission.items[5]: altitude 80 m above terrain, which QGC calculates from its terrain data as it uploads " +
+                "(AltitudeMode 3); the file holds no altitude for it, so it cannot be uploaded as it is",
+        )
         QgcPlanFile.read(QgcPlanFile.write(plan)) shouldBe plan
     }
 
