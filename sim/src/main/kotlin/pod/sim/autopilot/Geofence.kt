@@ -8,7 +8,7 @@ import pod.mavlink.mission.MissionType
 
 /**
  * The geofence a ground station uploads (the FENCE list), enforced as the vehicle's flavour does
- * ([ArduPilotFence]): the vehicle tests its position periodically and, on a new
+ * ([ArduPilotFence], [Px4Geofence]): the vehicle tests its position periodically and, on a new
  * breach while armed, says so and switches to its fence action's mode, once per breach.
  * [SimAutopilot.step] calls [step] after the physics, [SimAutopilot.setMode] calls [modeChanged],
  * and [Commands] asks the rest (DO_FENCE_ENABLE, guided destinations, arming, mode changes).
@@ -92,13 +92,7 @@ internal abstract class Geofence(protected val ap: SimAutopilot) {
         /** MAV_CMD_DO_FENCE_ENABLE. */
         const val DO_FENCE_ENABLE = 207
 
-        /** The fence of [ap]'s flavour (PX4's is not modelled yet: it never acts). */
-        fun of(ap: SimAutopilot): Geofence = if (ap.isPx4) Inert(ap) else ArduPilotFence(ap)
-
-        private class Inert(ap: SimAutopilot) : Geofence(ap) {
-            override val checkInterval: Double = Double.POSITIVE_INFINITY
-            override fun check() = Unit
-            override fun allowsDestination(target: Location): Boolean = true
-        }
+        /** The fence of [ap]'s flavour. */
+        fun of(ap: SimAutopilot): Geofence = if (ap.isPx4) Px4Geofence(ap) else ArduPilotFence(ap)
     }
 }

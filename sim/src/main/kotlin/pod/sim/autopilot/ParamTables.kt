@@ -109,6 +109,11 @@ internal object ParamTables {
         ParamDef("BAT_LOW_THR", 0.15, REAL32, 0.12, 0.5),
         ParamDef("NAV_DLL_ACT", 0.0, INT32, 0.0, 6.0),
         ParamDef("SYS_AUTOSTART", 4001.0, INT32, 0.0, 9999999.0),
+        // Geofence (navigator/geofence_params.yaml) and the failsafe delay (commander_params).
+        ParamDef("GF_ACTION", 2.0, INT32, 0.0, 5.0), // 0 none, 1 warn, 2 hold, 3 return, 4 terminate, 5 land
+        ParamDef("GF_MAX_HOR_DIST", 0.0, REAL32, 0.0, 10000.0), // m from home, 0 = off
+        ParamDef("GF_MAX_VER_DIST", 0.0, REAL32, 0.0, 10000.0), // m above home, 0 = off
+        ParamDef("COM_FAIL_ACT_T", 5.0, REAL32, 0.0, 25.0), // s of Hold before a Return or Land failsafe
     )
 
     private val px4Multirotor = listOf(

@@ -10,6 +10,7 @@ import io.kotest.matchers.doubles.shouldBeGreaterThan
 import io.kotest.matchers.doubles.shouldBeLessThan
 import io.kotest.matchers.shouldBe
 import pod.core.units.m
+import pod.core.vehicle.Autopilot
 import pod.core.vehicle.Severity
 import pod.core.vehicle.VehicleType
 import pod.mavlink.command.CommandResult
@@ -25,8 +26,8 @@ import pod.sim.flight.northEast
 import kotlin.math.roundToLong
 
 /**
- * Fences uploaded to a simulated vehicle are enforced as ArduPilot 4.7 enforces them (see
- * ArduPilotFence for the sources): the breach is announced, the fence action's
+ * Fences uploaded to a simulated vehicle are enforced as ArduPilot 4.7 and PX4 enforce them (see
+ * ArduPilotFence and Px4Geofence for the sources): the breach is announced, the fence action's
  * mode taken once, and the vehicle does not fly on past the edge.
  */
 class FenceTest : StringSpec({
@@ -186,6 +187,59 @@ class FenceTest : StringSpec({
         ap.runUntil(120.0, check = { farthest = maxOf(farthest, it.north()) }) { it.north() < 500.0 }
         farthest shouldBeLessThan 700.0
         ap.modeCommand("AUTO", out) shouldBe CommandResult.ACCEPTED
+    }
+
+    "a PX4 multicopter whose mission crosses an exclusion circle holds (GF_ACTION 2, its default) just inside it" {
+        val ap = autopilot(Autopilot.PX4)
+        ap.params["GF_ACTION"] shouldBe 2.0
+        ap.load(listOf(item(22, alt = 20.0), item(16, 200.0, 0.0, 20.0), item(16, 200.0, 100.0, 20.0)))
+        ap.loadFence(circles = listOf(FenceCircle(inclusion = false, center = point(100.0, 0.0), radiusMetres = 20.0)))
+        ap.run(2.5)
+        ap.command(CommandRequest(300)) shouldBe CommandResult.ACCEPTED
+        val out = ArrayList<SimOutput>()
+        ap.runUntil(120.0, check = { out += it.drain() }) { it.modeName == "AUTO.LOITER" }
+        out.filterIsInstance<SimOutput.Text>().map { it.severity to it.text } shouldContain (Severity.CRITICAL to "Failsafe activated")
+        val stoppedAt = ap.body.location
+        val center = HOME.offset(north = 100.m, east = 0.m)
+        horizontalDistance(center, stoppedAt) shouldBe (19.5 plusOrMinus 0.5) // just in: checked every 200 ms at 5 m/s
+        ap.run(30.0) { out += it.drain() }
+        ap.modeName shouldBe "AUTO.LOITER"
+        ap.armed shouldBe true
+        horizontalDistance(ap.body.location, stoppedAt) shouldBeLessThan 6.0
+        20.0 - horizontalDistance(center, ap.body.location) shouldBeLessThan 8.0
+        out.texts().count { it.startsWith("Failsafe") } shouldBe 1
+    }
+
+    "PX4 with GF_ACTION 3 holds COM_FAIL_ACT_T seconds, then returns" {
+        val ap = autopilot(Autopilot.PX4)
+        ap.params.set("GF_ACTION", 3.0)
+        ap.load(listOf(item(22, alt = 20.0), item(16, 200.0, 0.0, 20.0)))
+        ap.loadFence(listOf(square(inclusion = true, half = 100.0)))
+        ap.run(2.5)
+        ap.command(CommandRequest(300)) shouldBe CommandResult.ACCEPTED
+        val out = ArrayList<SimOutput>()
+        ap.runUntil(120.0, check = { out += it.drain() }) { it.modeName == "AUTO.LOITER" }
+        val heldAt = ap.time
+        out.texts() shouldContain "Failsafe activated, entering Hold for 5 seconds"
+        ap.north() shouldBe (101.0 plusOrMinus 1.0) // at the edge: checked every 200 ms at 5 m/s
+        ap.runUntil(10.0) { it.modeName == "AUTO.RTL" }
+        (ap.time - heldAt) shouldBe (5.0 plusOrMinus 0.25)
+    }
+
+    "PX4 drops an uploaded zone that does not contain home, and says why" {
+        val ap = autopilot(Autopilot.PX4)
+        ap.run(2.5)
+        ap.loadFence(listOf(square(inclusion = true, half = 50.0, north = 500.0)))
+        ap.run(0.5)
+        ap.drain().filterIsInstance<SimOutput.Text>().map { it.severity to it.text } shouldContainExactly listOf(
+            Severity.CRITICAL to "Geofence invalid, doesn't contain Home position",
+        )
+        ap.load(listOf(item(22, alt = 20.0), item(16, 100.0, 0.0, 20.0)))
+        ap.command(CommandRequest(300)) shouldBe CommandResult.ACCEPTED
+        val out = ArrayList<SimOutput>()
+        ap.run(40.0) { out += it.drain() }
+        ap.north() shouldBeGreaterThan 85.0 // at the last waypoint (NAV_ACC_RAD 10 m), outside the dropped zone
+        out.texts().filter { it.startsWith("Failsafe") }.shouldBeEmpty()
     }
 
     "ArduPlane will not arm with FENCE_ENABLE set and no polygon uploaded (its FENCE_TYPE is polygons only)" {
