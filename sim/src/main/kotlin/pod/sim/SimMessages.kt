@@ -12,6 +12,9 @@ import io.dronefleet.mavlink.common.DistanceSensor
 import io.dronefleet.mavlink.common.MavDistanceSensor
 import io.dronefleet.mavlink.common.MavSensorOrientation
 import io.dronefleet.mavlink.common.ExtendedSysState
+import io.dronefleet.mavlink.common.FenceBreach
+import io.dronefleet.mavlink.common.FenceMitigate
+import io.dronefleet.mavlink.common.FenceStatus
 import io.dronefleet.mavlink.common.GlobalPositionInt
 import io.dronefleet.mavlink.common.GpsFixType
 import io.dronefleet.mavlink.common.GpsRawInt
@@ -153,6 +156,13 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
                 .paramIndex(out.index)
                 .build()
         }
+        is SimOutput.FenceStatus -> FenceStatus.builder()
+            .breachStatus(if (out.breached) 1 else 0)
+            .breachCount(out.count)
+            .breachType(EnumValue.create<FenceBreach>(out.type))
+            .breachTime(out.timeMs)
+            .breachMitigation(EnumValue.create<FenceMitigate>(out.mitigation))
+            .build()
         is SimOutput.Photo -> CameraImageCaptured.builder()
             .timeBootMs(out.photo.time.inWholeMilliseconds)
             .timeUtc(BigInteger.ZERO)

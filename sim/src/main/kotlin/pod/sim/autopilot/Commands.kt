@@ -68,6 +68,7 @@ internal class Commands(private val ap: SimAutopilot) {
             DO_CHANGE_SPEED -> if (!ap.isPx4 && cmd.param2 <= 0f) DENIED else changeSpeed(cmd.param1.toInt(), cmd.param2.toDouble())
             DO_SET_HOME -> setHome(cmd)
             PREFLIGHT_CALIBRATION -> calibrate(cmd)
+            Geofence.DO_FENCE_ENABLE -> ap.fence.enableCommand(cmd)
             in CameraCommands.HANDLED -> CameraCommands.handle(ap, cmd)
             else -> UNSUPPORTED
         }
@@ -182,6 +183,7 @@ internal class Commands(private val ap: SimAutopilot) {
         { (if (ap.multirotor) "Arm: Mode not armable" else "Arm: ${ap.modeName} mode not armable").takeIf { !modeArmable() } },
         { "Arm: DO_LAND_START set and RTL_AUTOLAND disabled".takeIf { checksEnabled() && planeLandStartRefused() } },
         { "PreArm: Calibration in progress".takeIf { calibration != null } },
+        { ap.fence.armingProblem()?.let { "Arm: $it" } },
     )
 
     /**
@@ -221,6 +223,7 @@ internal class Commands(private val ap: SimAutopilot) {
             }
         }
         if (ap.isPx4 && name == "OFFBOARD") return refused.also { refuse("Offboard mode: no setpoints") }
+        ap.fence.refusesModeChange(name)?.let { (text, severity) -> return refused.also { refuse(text, severity) } }
         ap.setMode(name)
         return ACCEPTED
     }
@@ -287,6 +290,12 @@ internal class Commands(private val ap: SimAutopilot) {
             else -> ap.home.altitude.meters + cmd.z
         }
         val target = Location(lat ?: here.latitude, lon ?: here.longitude, alt.m)
+        if (!ap.fence.allowsDestination(target)) {
+            // ArduPilot refuses it before any mode change; PX4 switches mode and acks but stays put.
+            if (!ap.isPx4) return if (arduPlane) DENIED else FAILED
+            if (ap.modeName != guided) ap.setMode(guided)
+            return ACCEPTED.also { followUps += SimOutput.Text(Severity.CRITICAL, "Reposition is outside geofence") }
+        }
         if (ap.modeName != guided) ap.setMode(guided)
         // ArduCopter flies to the point and stops there whatever param3/param4 say: its handler
         // passes only the location to ModeGuided::set_destination (ArduCopter/GCS_Mavlink.cpp,

@@ -19,9 +19,27 @@ internal object ParamTables {
     fun forVehicle(autopilot: Autopilot, type: VehicleType, systemId: Int): List<ParamDef> = when {
         autopilot == Autopilot.PX4 && type.isMultirotor -> px4Common(systemId) + px4Multirotor
         autopilot == Autopilot.PX4 -> px4Common(systemId) + px4FixedWing
-        type.isMultirotor -> arduCommon(systemId) + arduCopter
-        else -> arduCommon(systemId) + arduPlane
+        type.isMultirotor -> arduCommon(systemId) + arduCopter + arduFence(copter = true)
+        else -> arduCommon(systemId) + arduPlane + arduFence(copter = false)
     }
+
+    /**
+     * The fence parameters the simulated fence reads, with AC_Fence.cpp's var_info defaults:
+     * disabled; FENCE_TYPE 7 on Copter (max altitude, circle, polygons), 4 on Plane (polygons);
+     * action 1 (Copter RTL or LAND, Plane RTL); FENCE_OPTIONS 1 on Plane (no mode change while
+     * recovering from a breach), 0 on Copter.
+     */
+    private fun arduFence(copter: Boolean) = listOfNotNull(
+        ParamDef("FENCE_ENABLE", 0.0, INT8, 0.0, 1.0),
+        ParamDef("FENCE_TYPE", if (copter) 7.0 else 4.0, INT8, 0.0, 15.0),
+        ParamDef("FENCE_ACTION", 1.0, INT8, 0.0, 8.0),
+        ParamDef("FENCE_ALT_MAX", 100.0, REAL32, 10.0, 1000.0), // m above home
+        ParamDef("FENCE_RADIUS", 300.0, REAL32, 30.0, 10000.0), // m around home
+        ParamDef("FENCE_MARGIN", 2.0, REAL32, 1.0, 10.0), // m
+        ParamDef("FENCE_OPTIONS", if (copter) 0.0 else 1.0, INT16, 0.0, 7.0),
+        ParamDef("FENCE_ALT_MIN", -10.0, REAL32, -100.0, 100.0).takeIf { !copter }, // m, sets Plane's return altitude
+        ParamDef("FENCE_RET_ALT", 0.0, INT16, 0.0, 32767.0).takeIf { !copter }, // m above home, 0: half way
+    )
 
     // ArduPilot 4.7 calls the system id MAV_SYSID (SYSID_THISMAV before 4.7).
     private fun arduCommon(systemId: Int) = listOf(
@@ -91,6 +109,11 @@ internal object ParamTables {
         ParamDef("BAT_LOW_THR", 0.15, REAL32, 0.12, 0.5),
         ParamDef("NAV_DLL_ACT", 0.0, INT32, 0.0, 6.0),
         ParamDef("SYS_AUTOSTART", 4001.0, INT32, 0.0, 9999999.0),
+        // Geofence (navigator/geofence_params.yaml) and the failsafe delay (commander_params).
+        ParamDef("GF_ACTION", 2.0, INT32, 0.0, 5.0), // 0 none, 1 warn, 2 hold, 3 return, 4 terminate, 5 land
+        ParamDef("GF_MAX_HOR_DIST", 0.0, REAL32, 0.0, 10000.0), // m from home, 0 = off
+        ParamDef("GF_MAX_VER_DIST", 0.0, REAL32, 0.0, 10000.0), // m above home, 0 = off
+        ParamDef("COM_FAIL_ACT_T", 5.0, REAL32, 0.0, 25.0), // s of Hold before a Return or Land failsafe
     )
 
     private val px4Multirotor = listOf(

@@ -55,6 +55,7 @@ internal class SimAutopilot(
     val paramService = ParamService(this)
     val mission = MissionRunner(this)
     val camera = Camera()
+    val fence: Geofence = Geofence.of(this)
 
     /** Elevation AMSL in metres of the ground straight below the vehicle (the terrain's, or flat). */
     val ground: Double get() = world.groundAt(body.location)
@@ -205,6 +206,7 @@ internal class SimAutopilot(
         val guidance = guidance()
         body = airframe.step(body, guidance, performance(), ground, armed, dt)
         afterStep()
+        fence.step()
         for (shot in camera.step(time, body.location, if (activity == Activity.Mission) missionServer.current else null)) {
             val photo = shot.copy(heading = body.heading.deg, heightAboveGround = (body.location.altitude.meters - ground).m, detected = world.detect(body.location, body.heading))
             photos += photo
@@ -319,6 +321,7 @@ internal class SimAutopilot(
         if (name != modeName) guidedRadius = 0.0
         modeName = name
         enterMode(name)
+        fence.modeChanged()
     }
 
     private fun enterMode(name: String) {

@@ -26,6 +26,12 @@ internal sealed interface SimOutput {
 
     /** PARAM_VALUE for the parameter at [index]. */
     data class Param(val index: Int) : SimOutput
+
+    /**
+     * FENCE_STATUS (162): [breached] now, breaches so far, FENCE_BREACH [type], when the breach
+     * began (ms since boot), FENCE_MITIGATE [mitigation].
+     */
+    data class FenceStatus(val breached: Boolean, val count: Int, val type: Int, val timeMs: Long, val mitigation: Int) : SimOutput
 }
 
 /** A COMMAND_LONG or COMMAND_INT, normalised: [frame] is null for COMMAND_LONG. */
