@@ -125,7 +125,8 @@ internal class TaskRunner(private val engine: Engine, private val program: Progr
     /**
      * Runs [flight] with [vehicle] claimed for [label]: fails with [VehicleLost] once the vehicle is
      * unheard for the connection timeout, and makes it safe ([onCancel] or the program's choice)
-     * when the flight fails or is cancelled.
+     * when the flight fails or is cancelled, unless the vehicle's autopilot or pilot ended it by
+     * taking control ([pod.core.platform.AutopilotTookControl]).
      */
     private suspend fun steer(label: String, vehicle: PlatformVehicle, onCancel: SafeState?, flight: suspend () -> Unit) {
         engine.claim(vehicle.id, label)
@@ -139,7 +140,7 @@ internal class TaskRunner(private val engine: Engine, private val program: Progr
         } catch (e: VehicleLost) {
             throw e
         } catch (e: Throwable) {
-            makeSafe(vehicle, safe)
+            if (e !is pod.core.platform.AutopilotTookControl) makeSafe(vehicle, safe)
             throw e
         } finally {
             engine.unclaim(vehicle.id)

@@ -53,6 +53,15 @@ public interface Platform {
     public suspend fun makeSafe(vehicle: PlatformVehicle, state: SafeState)
 }
 
+/**
+ * Marks a failure of a flight that the vehicle's own autopilot or its pilot ended by taking
+ * control: a failsafe (a fence breach, a low battery), a mode switch on the transmitter, another
+ * ground station. The engine leaves such a vehicle as they put it instead of making it safe its
+ * own way ([Platform.makeSafe]), which would override them: a copter that breached its fence keeps
+ * flying the autopilot's RTL rather than stopping outside the fence.
+ */
+public interface AutopilotTookControl
+
 /** What a vehicle does when the task flying it is cancelled. */
 public enum class SafeState {
     /** Stop and hold position (loiter for planes). */

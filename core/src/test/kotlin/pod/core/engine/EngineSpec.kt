@@ -119,6 +119,17 @@ class EngineSpec : FunSpec({
         }
     }
 
+    test("a flight whose autopilot took control fails without Pod making its vehicle safe over the autopilot; its cancelled sibling is made safe") {
+        runTest {
+            val fleet = FakeFleet(2)
+            val error = shouldThrow<TookControl> {
+                engine(fleet).run { execute(Task.Concurrent(listOf(fly("failsafe-1", fleet[1]), fly("ok", fleet[2], steps = 50)))) }
+            }
+            error.message shouldContain "took control"
+            fleet.madeSafe.value shouldContainExactly listOf(2 to SafeState.HOLD)
+        }
+    }
+
     test("watch with ignore swallows a failure, propagate passes it on, recover runs another task") {
         runTest {
             val fleet = FakeFleet(1)

@@ -79,6 +79,7 @@ internal class FakeFleet(
                 delay(stepTime)
                 fake.setBattery(((fake.battery.value?.remaining ?: 1.0) - drainPerStep).coerceAtLeast(0.0))
                 report(MissionEvent.StepDone(index))
+                if (mission.name.startsWith("failsafe")) throw TookControl("${mission.name}: the autopilot of ${vehicle.name} took control")
                 if (mission.name.startsWith("fail")) error("${mission.name} failed on ${vehicle.name}")
             }
             if (mission.completion == pod.core.mission.MissionCompletion.LANDED) fake.landedState.value = LandedState.ON_GROUND
@@ -105,3 +106,6 @@ internal class FakeFleet(
         )
     }
 }
+
+/** A flight the vehicle's autopilot ended by taking control (a fence breach, a failsafe). */
+class TookControl(message: String) : Exception(message), pod.core.platform.AutopilotTookControl

@@ -67,7 +67,9 @@ public class MissionNotFlyable(
 
 /**
  * The vehicle left its mission mode for [mode] (a pilot, a failsafe, another ground station) at
- * [step] and did not come back within the grace time.
+ * [step] and did not come back within the grace time; [said] is what it reported around the switch
+ * (a failsafe's reason: "Polygon fence breached", "Failsafe activated"). The engine leaves the
+ * vehicle in the mode it chose ([pod.core.platform.AutopilotTookControl]).
  */
 public class MissionInterrupted(
     override val mission: String,
@@ -75,4 +77,10 @@ public class MissionInterrupted(
     public val mode: String,
     /** The step it was on, or null. */
     public val step: Int?,
-) : MissionExecutionException("mission \"$mission\" interrupted: the vehicle switched to $mode" + (step?.let { " at step $it" } ?: ""))
+    /** The vehicle's notices, warnings and errors (STATUSTEXT) from shortly before the switch until the grace time ran out, oldest first. */
+    public val said: List<String> = emptyList(),
+) : MissionExecutionException(
+    "mission \"$mission\" interrupted: the vehicle switched to $mode" + (step?.let { " at step $it" } ?: "") +
+        (if (said.isEmpty()) "" else "; it said: " + said.joinToString("; ") { "\"$it\"" }),
+),
+    pod.core.platform.AutopilotTookControl

@@ -1,6 +1,7 @@
 package pod.mavlink.executor
 
 import java.util.concurrent.atomic.AtomicBoolean
+import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeMark
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.CoroutineStart
@@ -27,6 +28,7 @@ import pod.core.units.Location
 import pod.core.units.m
 import pod.core.vehicle.ConnectionState
 import pod.core.vehicle.LandedState
+import pod.core.vehicle.Severity
 import pod.core.vehicle.isAirborne
 import pod.core.vehicle.VehicleLost
 import pod.mavlink.MavlinkVehicle
@@ -128,6 +130,9 @@ public class MissionExecutor(
             launch(start = CoroutineStart.UNDISPATCHED) { vehicle.telemetry.missionCurrent.filterNotNull().collect { inbox.send(Input.Current(it)) } }
             launch(start = CoroutineStart.UNDISPATCHED) { vehicle.telemetry.itemReached.collect { inbox.send(Input.Reached(it)) } }
             launch(start = CoroutineStart.UNDISPATCHED) {
+                vehicle.statusTexts.collect { if (it.severity <= Severity.NOTICE) inbox.send(Input.Text(it.text, vehicle.clock.markNow())) }
+            }
+            launch(start = CoroutineStart.UNDISPATCHED) {
                 combine(vehicle.telemetry.position, vehicle.telemetry.landedState, vehicle.telemetry.armed, vehicle.telemetry.mode, vehicle.connection) { p, l, a, m, c ->
                     Input.Vehicle(p, l, a, m?.name, c)
                 }.collect { inbox.send(it) }
@@ -147,6 +152,7 @@ public class MissionExecutor(
     private sealed interface Input {
         data class Current(val seq: Int) : Input
         data class Reached(val seq: Int) : Input
+        data class Text(val text: String, val at: TimeMark) : Input
         data class Vehicle(
             val position: pod.core.vehicle.Position?,
             val landed: LandedState,
@@ -166,6 +172,9 @@ public class MissionExecutor(
         var seen: Input.Vehicle? = null
         var airborneSeen = airborneAtStart
         var leftMission: TimeMark? = null
+        // A failsafe says why before or as it switches mode (ArduPilot's fence: the text, then
+        // the mode; PX4: "Failsafe activated"): the latest few lines, for the error.
+        val heard = ArrayDeque<Input.Text>()
 
         suspend fun carryOut(outputs: List<ProgressTracker.Output>) {
             for (out in outputs) when (out) {
@@ -193,9 +202,16 @@ public class MissionExecutor(
         while (true) {
             val input = leftMission?.let { left ->
                 val remaining = timing.modeGrace - left.elapsedNow()
-                withTimeoutOrNull(remaining) { inbox.receive() } ?: throw MissionInterrupted(mission.name, seen?.mode ?: "?", tracker.currentStep)
+                withTimeoutOrNull(remaining) { inbox.receive() } ?: throw MissionInterrupted(
+                    mission.name, seen?.mode ?: "?", tracker.currentStep,
+                    said = heard.filter { it.at.elapsedNow() <= left.elapsedNow() + TEXTS_BEFORE_SWITCH }.map { it.text },
+                )
             } ?: inbox.receive()
             when (input) {
+                is Input.Text -> {
+                    heard.addLast(input)
+                    while (heard.size > TEXTS_KEPT) heard.removeFirst()
+                }
                 is Input.Current -> carryOut(tracker.onCurrent(input.seq))
                 is Input.Reached -> carryOut(tracker.onReached(input.seq))
                 is Input.Vehicle -> {
@@ -228,4 +244,12 @@ public class MissionExecutor(
     }
 
     private val during: String get() = "mission \"${mission.name}\""
+
+    private companion object {
+        /** How many of the vehicle's latest notices are kept for a [MissionInterrupted]. */
+        const val TEXTS_KEPT = 8
+
+        /** How long before the switch a notice may come and still be its reason. */
+        val TEXTS_BEFORE_SWITCH = 3.seconds
+    }
 }
