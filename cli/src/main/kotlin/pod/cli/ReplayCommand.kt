@@ -67,7 +67,7 @@ internal class ReplayCommand(private val out: Output) : CliktCommand(name = "rep
         }
         val path = checkedTlog()
         val link = try {
-            TlogReplayLink.open(path, speed)
+            TlogReplayLink.open(path, speed, paused = true)
         } catch (e: TlogException) {
             badInput(e.message!!)
         }
@@ -79,6 +79,8 @@ internal class ReplayCommand(private val out: Output) : CliktCommand(name = "rep
         val recording = gcs.record(tracks)
         val view = LiveView(out, json)
         if (json) out.line(EventJson.encode(Event.Replaying(file, speed))) else view.note("replaying $file at ${speed}x")
+        // Played only now that the tracks are recorded: at a high speed the first frames come at once.
+        link.play()
         try {
             val playing: suspend () -> Unit = {
                 coroutineScope {

@@ -1,5 +1,6 @@
 package pod.mavlink.tlog
 
+import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
@@ -27,6 +28,9 @@ import kotlin.time.TimeMark
  * record, or when the link is [close]d; [progress] tells which.
  *
  * All frames arrive from one peer, [RECORDING]: a tlog keeps no source addresses.
+ *
+ * Opened `paused`, it plays nothing until [play]: a station's taps ([pod.mavlink.GroundStation.record])
+ * and views can then be in place before the first frame, which at a high speed comes at once.
  */
 public class TlogReplayLink private constructor(
     private val reader: TlogReader,
@@ -34,12 +38,14 @@ public class TlogReplayLink private constructor(
     /** How many times faster than recorded the log plays: 1 is real time. */
     public val speed: Double,
     private val timebase: Timebase,
+    paused: Boolean,
 ) : MavlinkLink {
     init {
         require(speed > 0.0 && speed.isFinite()) { "speed must be a finite number > 0, was $speed" }
     }
 
     @Volatile private var closed = false
+    private val playing = CompletableDeferred<Unit>().apply { if (!paused) complete(Unit) }
     private var receiving = false
     private val _progress = MutableStateFlow(ReplayProgress())
 
@@ -65,6 +71,7 @@ public class TlogReplayLink private constructor(
         var first: Long? = null
         var started: TimeMark? = null
         try {
+            playing.await()
             while (!closed) {
                 val record = reader.next() ?: break
                 val t0 = first ?: record.timestampMicros.also { first = it }
@@ -85,6 +92,11 @@ public class TlogReplayLink private constructor(
         }
     }
 
+    /** Starts a replay opened paused; does nothing more once it plays. */
+    public fun play() {
+        playing.complete(Unit)
+    }
+
     /** Discards [bytes]: a recording cannot be talked to. */
     override suspend fun send(bytes: ByteArray, peer: LinkPeer) {}
 
@@ -96,6 +108,7 @@ public class TlogReplayLink private constructor(
             closed = true
             !receiving
         }
+        playing.complete(Unit) // a paused replay that is closed returns from receive at once
         // A replay that never started still holds the file; one that did closes it as it returns.
         if (idle) reader.close()
     }
@@ -105,18 +118,19 @@ public class TlogReplayLink private constructor(
         public val RECORDING: LinkPeer = LinkPeer("tlog")
 
         /**
-         * Opens the tlog at [path] for replay at [speed] on [timebase]. A file that cannot be opened
-         * throws [TlogException]; a [speed] that is not a finite number > 0 throws
-         * [IllegalArgumentException].
+         * Opens the tlog at [path] for replay at [speed] on [timebase], playing as soon as it is
+         * received from, or, if [paused], once [play] is called. A file that cannot be opened throws
+         * [TlogException]; a [speed] that is not a finite number > 0 throws [IllegalArgumentException].
          */
         public fun open(
             path: Path,
             speed: Double = 1.0,
             timebase: Timebase = Timebase.System,
             codec: MessageCodec = MessageCodec.Default,
+            paused: Boolean = false,
         ): TlogReplayLink {
             require(speed > 0.0 && speed.isFinite()) { "speed must be a finite number > 0, was $speed" }
-            return TlogReplayLink(TlogReader.open(path, codec), path, speed, timebase)
+            return TlogReplayLink(TlogReader.open(path, codec), path, speed, timebase, paused)
         }
     }
 }

@@ -114,7 +114,7 @@ class TlogReplayLinkTest : StringSpec({
         val file = tempfile(suffix = ".tlog").writeTlog(records)
         runTest {
             val timebase = virtualTimebase()
-            val link = TlogReplayLink.open(file.toPath(), speed = 10.0, timebase = timebase)
+            val link = TlogReplayLink.open(file.toPath(), speed = 10.0, timebase = timebase, paused = true)
             val gcs = GroundStation.open(
                 link, backgroundScope,
                 GroundStationConfig(lostAfter = 300.milliseconds, streamRates = emptyMap(), requestHome = false, requestPayloads = false, timebase = timebase),
@@ -122,6 +122,7 @@ class TlogReplayLinkTest : StringSpec({
             val tracks = TrackRecorder()
             gcs.record(tracks, startEpochMicros = T0)
             val lost = backgroundScope.launch(timebase.dispatcher) { gcs.events.filterIsInstance<FleetEvent.Lost>().first() }
+            link.play()
             link.progress.first { it.finished }
             // The last record is at 29.750001 s of log: at 10x, 2.975 s (a delay rounds up to the next millisecond).
             testScheduler.currentTime shouldBeInRange 2_975L..2_976L
@@ -155,6 +156,32 @@ class TlogReplayLinkTest : StringSpec({
             count shouldBe 49
             link.progress.value.finished shouldBe true
             link.progress.value.error.shouldBeInstanceOf<TlogTruncated>()
+        }
+    }
+
+    "opened paused, a replay delivers nothing until play, then paces the log from that moment; closed while paused, it returns" {
+        val records = twoCopters().take(20)
+        val file = tempfile(suffix = ".tlog").writeTlog(records)
+        runTest {
+            val link = TlogReplayLink.open(file.toPath(), speed = 2.0, timebase = virtualTimebase(), paused = true)
+            val delivered = mutableListOf<Long>()
+            val receiving = backgroundScope.launch { link.receive { _, _ -> delivered += testScheduler.currentTime } }
+            testScheduler.advanceTimeBy(10_000)
+            testScheduler.runCurrent()
+            delivered shouldBe emptyList()
+            link.play()
+            receiving.join()
+            delivered.size shouldBe 20
+            delivered.first() shouldBe 10_000L
+            // The 20th record is 1.500002 s of log after the first: 0.75 s at 2x, counted from play
+            // (the scheduler's delays round up to whole milliseconds).
+            delivered.last() shouldBeInRange 10_750L..10_751L
+            val idle = TlogReplayLink.open(file.toPath(), timebase = virtualTimebase(), paused = true)
+            val waiting = backgroundScope.launch { idle.receive { _, _ -> throw AssertionError("a closed replay delivered a frame") } }
+            testScheduler.runCurrent()
+            idle.close()
+            waiting.join()
+            idle.progress.value.records shouldBe 0L
         }
     }
 
