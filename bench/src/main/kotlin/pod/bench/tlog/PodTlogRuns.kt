@@ -75,13 +75,14 @@ object PodTlogRuns {
 
     /**
      * The log played through a [TlogReplayLink] at [speed] to a [GroundStation], wired as `pod replay`
-     * wires it (its station configuration, a [TrackRecorder] tap when [withTracks], waiting on the
-     * link's progress), from opening the station to the replay's end. Checked: every record played,
-     * each vehicle's last position on the station equal to its last GLOBAL_POSITION_INT in the log.
+     * wires it (opened paused, its station configuration, a [TrackRecorder] tap when [withTracks],
+     * played once the tap is in place, waiting on the link's progress), from opening the station to
+     * the replay's end. Checked: every record played, each vehicle's last position on the station
+     * equal to its last GLOBAL_POSITION_INT in the log, and the recorder's track holding every one.
      */
     suspend fun replay(path: Path, speed: Double, withTracks: Boolean, expected: LogContents, limit: Duration): Pass = coroutineScope {
         System.gc()
-        val link = TlogReplayLink.open(path, speed)
+        val link = TlogReplayLink.open(path, speed, paused = true)
         val config = GroundStationConfig(
             lostAfter = maxOf(3.seconds / speed, 50.milliseconds),
             streamRates = emptyMap(), requestHome = false, requestPayloads = false,
@@ -91,6 +92,7 @@ object PodTlogRuns {
         val station = GroundStation.open(link, this, config)
         val tracks = if (withTracks) TrackRecorder(stepMetres = 0.0) else null
         val recording = tracks?.let { station.record(it) }
+        link.play()
         try {
             val done = withTimeoutOrNull(limit) { link.progress.first { it.finished } }
             val wall = (System.nanoTime() - t0) / 1e9
@@ -112,7 +114,8 @@ object PodTlogRuns {
             tracks?.tracks()?.let { recorded ->
                 for ((id, count) in expected.positions) {
                     val points = recorded.firstOrNull { it.systemId == id }?.points?.size ?: 0
-                    if (points != count) notes += "TrackRecorder: vehicle $id has $points of its $count positions"
+                    // Before the replay could open paused, the first frames went by before the tap was in.
+                    if (points != count) problems += "TrackRecorder: vehicle $id has $points of its $count positions"
                 }
             }
             Pass(wall, cpu, progress.records, problems, notes)
