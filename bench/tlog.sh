@@ -5,10 +5,10 @@
 # TlogTracks.read and TlogReader, with pymavlink (bench/pymavlink_tlog.py: mavutil + recv_msg), and
 # replays it to a Pod GroundStation through a TlogReplayLink at 1000x and unpaced. Every pass is
 # checked against what was written. Prints the table; results land in bench/target/results/tlog.json
-# and tlog.md (the Python peer's stderr in tlog-peers.log). About 2 minutes on 2 cores.
+# and tlog.md (the Python peer's stderr in tlog-peers.log). About 2 minutes on 2 cores, 40 s after the build.
 #
 #   bench/tlog.sh             the full run
-#   bench/tlog.sh --quick     a 20-second smoke run: 2 vehicles, 10 minutes of log, one pass each
+#   bench/tlog.sh --quick     a smoke run: 2 vehicles, 10 minutes of log, one pass each (seconds after the build)
 #   any other option goes to the harness (a later option wins), e.g. --speeds 100,1000 --replays 5
 # The Python with pymavlink is POD_PYTHON, else .venv/bin/python (tools/python-peers.sh makes it).
 set -euo pipefail
