@@ -7,6 +7,7 @@ import pod.core.units.Location
 import pod.core.units.m
 import pod.core.vehicle.VehicleType
 import pod.mavlink.MavlinkEnums
+import pod.mavlink.MessageIds
 import pod.mavlink.codec.FrameDecoder
 import pod.mavlink.codec.MessageCodec
 import java.nio.file.Path
@@ -98,6 +99,8 @@ public class TrackRecorder(
     @Synchronized
     override fun onFrame(timestampMicros: Long, direction: FrameDirection, frame: ByteArray) {
         decoder.feed(frame) { decoded ->
+            // Only three messages make a track: the rest (most of a log) is not worth decoding.
+            if (decoded.messageId !in TRACK_MESSAGES) return@feed
             when (val message = codec.decode(decoded)) {
                 is Heartbeat -> if (MavlinkEnums.isVehicle(message.type().value(), message.autopilot().value())) {
                     builders.getOrPut(decoded.systemId) { Builder() }.type = MavlinkEnums.vehicleType(message.type().value())
@@ -111,6 +114,10 @@ public class TrackRecorder(
                     Location(message.latitude() / 1e7, message.longitude() / 1e7, (message.altitude() / 1000.0).m)
             }
         }
+    }
+
+    private companion object {
+        val TRACK_MESSAGES = setOf(MessageIds.HEARTBEAT, MessageIds.GLOBAL_POSITION_INT, MessageIds.HOME_POSITION)
     }
 
     /** Every vehicle's track so far, in the order the vehicles were first heard. */
