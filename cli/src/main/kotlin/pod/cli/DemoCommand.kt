@@ -17,8 +17,6 @@ import pod.cli.json.Event
 import pod.cli.json.EventJson
 import pod.cli.json.toEvent
 import pod.launch.Interruption
-import pod.launch.map.MapFormat
-import pod.launch.map.MapFormatUnknown
 import pod.launch.Interrupted
 import pod.dsl.action
 import pod.dsl.and
@@ -52,12 +50,7 @@ internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo"
 
     override fun run() = runBlocking {
         // The map is written at the end: a path that cannot take it fails now, not after the flight.
-        try {
-            MapFormat.of(map)
-        } catch (e: MapFormatUnknown) {
-            badInput(e.message!!)
-        }
-        LocalFiles.checkWritable(map.toString())
+        LocalFiles.checkMapOutput(map.toString())
         val view = LiveView(out, json, period = if (json) 20.seconds else 5.seconds)
         var failed: Throwable? = null
         try {

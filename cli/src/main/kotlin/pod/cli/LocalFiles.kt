@@ -3,6 +3,10 @@ package pod.cli
 import pod.launch.geo.GeoFeature
 import pod.launch.geo.GeoJson
 import pod.launch.geo.GeoJsonException
+import pod.launch.map.FlightMap
+import pod.launch.map.MapFormat
+import pod.launch.map.MapFormatUnknown
+import pod.launch.map.MapWriteFailed
 import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionType
 import pod.mavlink.mission.WplFile
@@ -66,12 +70,37 @@ internal object LocalFiles {
 
     /** The vehicles' tracks in the tlog [name]; a log cut short or corrupt part way gives what came before, with its error. */
     fun readTracks(name: String): LoggedFlight {
-        val path = path(name)
-        if (Files.isDirectory(path)) badInput("$name is a directory, not a tlog")
-        if (!Files.exists(path)) badInput("no such file: $name")
+        val path = tlogPath(name)
         return try {
             TlogTracks.read(path)
         } catch (e: TlogException) {
+            badInput(e.message!!)
+        }
+    }
+
+    /** The path of the tlog [name]: a file that exists (its contents are the reader's to check). */
+    fun tlogPath(name: String): Path {
+        val path = path(name)
+        if (Files.isDirectory(path)) badInput("$name is a directory, not a tlog")
+        if (!Files.exists(path)) badInput("no such file: $name")
+        return path
+    }
+
+    /** Refuses a map to write at [name] whose extension names no map format, or that cannot be written ([checkWritable]). */
+    fun checkMapOutput(name: String) {
+        try {
+            MapFormat.of(path(name))
+        } catch (e: MapFormatUnknown) {
+            badInput(e.message!!)
+        }
+        checkWritable(name)
+    }
+
+    /** Writes [map] to [name], in the format its extension names. */
+    fun writeMap(map: FlightMap, name: String) {
+        try {
+            map.write(path(name))
+        } catch (e: MapWriteFailed) {
             badInput(e.message!!)
         }
     }

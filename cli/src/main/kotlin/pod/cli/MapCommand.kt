@@ -8,9 +8,6 @@ import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.options.required
 import pod.launch.geo.MapFeatures
 import pod.launch.map.FlightMap
-import pod.launch.map.MapFormat
-import pod.launch.map.MapFormatUnknown
-import pod.launch.map.MapWriteFailed
 import pod.mavlink.mission.MissionType
 import java.nio.file.Path
 
@@ -28,13 +25,7 @@ internal class MapCommand(private val out: Output) : CliktCommand(name = "map") 
     override fun help(context: Context): String = "Draw plans and flown tracks on a map (SVG, GeoJSON or KML)."
 
     override fun run() {
-        val target = Path.of(output)
-        try {
-            MapFormat.of(target)
-        } catch (e: MapFormatUnknown) {
-            badInput(e.message!!)
-        }
-        LocalFiles.checkWritable(output)
+        LocalFiles.checkMapOutput(output)
         val map = FlightMap(title ?: inputs.joinToString(" + ") { Path.of(it).fileName.toString() })
         val counts = sortedMapOf<String, Int>()
         for (name in inputs) {
@@ -59,11 +50,7 @@ internal class MapCommand(private val out: Output) : CliktCommand(name = "map") 
             added.forEach { f -> counts.merge(f.properties["kind"]?.toString() ?: "other", 1, Int::plus) }
             map.add(added)
         }
-        try {
-            map.write(target)
-        } catch (e: MapWriteFailed) {
-            badInput(e.message!!)
-        }
+        LocalFiles.writeMap(map, output)
         val summary = if (counts.isEmpty()) "nothing to draw" else counts.entries.joinToString(", ") { (kind, n) -> "$n $kind" }
         out.line("wrote $output: $summary")
     }

@@ -21,11 +21,7 @@ import pod.cli.json.Event
 import pod.cli.json.EventJson
 import pod.launch.Interrupted
 import pod.launch.Interruption
-import pod.launch.geo.MapFeatures
 import pod.launch.map.FlightMap
-import pod.launch.map.MapFormat
-import pod.launch.map.MapFormatUnknown
-import pod.launch.map.MapWriteFailed
 import pod.mavlink.GroundStation
 import pod.mavlink.GroundStationConfig
 import pod.mavlink.tlog.TlogCorrupt
@@ -33,7 +29,6 @@ import pod.mavlink.tlog.TlogException
 import pod.mavlink.tlog.TlogReader
 import pod.mavlink.tlog.TlogReplayLink
 import pod.mavlink.tlog.TrackRecorder
-import java.nio.file.Files
 import java.nio.file.Path
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
@@ -57,14 +52,7 @@ internal class ReplayCommand(private val out: Output) : CliktCommand(name = "rep
 
     override fun run() = runBlocking {
         // The map is written at the end: a path that cannot take it fails now, not after the replay.
-        map?.let { target ->
-            try {
-                MapFormat.of(target)
-            } catch (e: MapFormatUnknown) {
-                badInput(e.message!!)
-            }
-            LocalFiles.checkWritable(target.toString())
-        }
+        map?.let { LocalFiles.checkMapOutput(it.toString()) }
         val path = checkedTlog()
         val link = try {
             TlogReplayLink.open(path, speed, paused = true)
@@ -116,13 +104,7 @@ internal class ReplayCommand(private val out: Output) : CliktCommand(name = "rep
 
     /** The tlog to play: an existing file that starts with one whole record. */
     private fun checkedTlog(): Path {
-        val path = try {
-            Path.of(file)
-        } catch (e: java.nio.file.InvalidPathException) {
-            badInput("cannot read $file: ${e.message}")
-        }
-        if (Files.isDirectory(path)) badInput("$file is a directory, not a tlog")
-        if (!Files.exists(path)) badInput("no such file: $file")
+        val path = LocalFiles.tlogPath(file)
         try {
             TlogReader.open(path).use { it.next() } ?: badInput("$file is empty: no tlog record to play")
         } catch (e: TlogException) {
@@ -135,12 +117,8 @@ internal class ReplayCommand(private val out: Output) : CliktCommand(name = "rep
     private fun writeMap(tracks: TrackRecorder) {
         val target = map ?: return
         val drawn = FlightMap("replay of ${Path.of(file).fileName}")
-        tracks.tracks().forEach { drawn.add(MapFeatures.of(it)) }
-        try {
-            drawn.write(target)
-        } catch (e: MapWriteFailed) {
-            badInput(e.message!!)
-        }
+        tracks.tracks().forEach(drawn::track)
+        LocalFiles.writeMap(drawn, target.toString())
     }
 
     private companion object {

@@ -40,10 +40,6 @@ public class TlogReplayLink private constructor(
     private val timebase: Timebase,
     paused: Boolean,
 ) : MavlinkLink {
-    init {
-        require(speed > 0.0 && speed.isFinite()) { "speed must be a finite number > 0, was $speed" }
-    }
-
     @Volatile private var closed = false
     private val playing = CompletableDeferred<Unit>().apply { if (!paused) complete(Unit) }
     private var receiving = false

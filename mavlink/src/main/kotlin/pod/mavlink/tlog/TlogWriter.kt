@@ -6,20 +6,26 @@ import java.io.OutputStream
 import java.nio.file.Files
 import java.nio.file.Path
 import java.nio.file.StandardOpenOption
+import kotlin.time.Duration.Companion.seconds
+import kotlin.time.TimeSource
 
 /**
  * Appends [TlogRecord]s to a stream in the tlog format (see [TlogRecord]).
  *
  * Thread-safe: a ground station writes received frames from its receive thread and sent frames
  * from its senders. Writes are buffered; the buffer goes to the stream at least once a second
- * while records come (so a crash loses at most about a second), on [flush] and on [close].
+ * of [clock] while records come (so a crash loses at most about a second), on [flush] and on [close].
  * Writing after [close], or a failing stream, throws [TlogWriteFailed].
  */
-public class TlogWriter(out: OutputStream) : AutoCloseable {
+public class TlogWriter(
+    out: OutputStream,
+    /** What "a second" is measured on; a test passes its own. */
+    private val clock: TimeSource = TimeSource.Monotonic,
+) : AutoCloseable {
     private val out = BufferedOutputStream(out, 64 * 1024)
     private val lock = Any()
     private val header = ByteArray(TlogFrames.TIMESTAMP)
-    private var lastFlush = System.nanoTime()
+    private var lastFlush = clock.markNow()
     private var closed = false
 
     /** Records written so far. */
@@ -40,10 +46,9 @@ public class TlogWriter(out: OutputStream) : AutoCloseable {
                 out.write(header)
                 out.write(frame)
                 records++
-                val now = System.nanoTime()
-                if (now - lastFlush >= FLUSH_INTERVAL_NANOS) {
+                if (lastFlush.elapsedNow() >= FLUSH_INTERVAL) {
                     out.flush()
-                    lastFlush = now
+                    lastFlush = clock.markNow()
                 }
             } catch (e: IOException) {
                 throw TlogWriteFailed("cannot write to the tlog: ${e.message}", e)
@@ -60,7 +65,7 @@ public class TlogWriter(out: OutputStream) : AutoCloseable {
             if (closed) return
             try {
                 out.flush()
-                lastFlush = System.nanoTime()
+                lastFlush = clock.markNow()
             } catch (e: IOException) {
                 throw TlogWriteFailed("cannot write to the tlog: ${e.message}", e)
             }
@@ -91,7 +96,7 @@ public class TlogWriter(out: OutputStream) : AutoCloseable {
     }
 
     public companion object {
-        private const val FLUSH_INTERVAL_NANOS = 1_000_000_000L
+        private val FLUSH_INTERVAL = 1.seconds
 
         /** A writer to a new file at [path] (replacing one that is there), or appending to it when [append]. */
         public fun create(path: Path, append: Boolean = false): TlogWriter {

@@ -17,6 +17,8 @@ import java.io.IOException
 import java.io.OutputStream
 import java.nio.file.Files
 import kotlin.random.Random
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.TestTimeSource
 
 private fun tlogOf(records: List<TlogRecord>): ByteArray {
     val out = ByteArrayOutputStream()
@@ -119,6 +121,24 @@ class TlogRoundTripTest : StringSpec({
             shouldThrow<IllegalArgumentException> { writer.write(1, byteArrayOf(0x12, 0, 0, 0, 0, 0, 0, 0)) }
             writer.records shouldBe 0
         }
+    }
+
+    "buffered records reach the stream once a second of the writer's clock has passed since the last flush" {
+        val out = ByteArrayOutputStream()
+        val clock = TestTimeSource()
+        val writer = TlogWriter(out, clock)
+        val frame = TestFrames.random(Random(6))
+        writer.write(1, frame)
+        clock += 999.milliseconds
+        writer.write(2, frame)
+        out.size() shouldBe 0
+        clock += 1.milliseconds
+        writer.write(3, frame)
+        out.size() shouldBe 3 * (8 + frame.size)
+        writer.write(4, frame)
+        out.size() shouldBe 3 * (8 + frame.size) // the second starts again from that flush
+        writer.close()
+        out.size() shouldBe 4 * (8 + frame.size)
     }
 
     "writes after close and a failing stream throw TlogWriteFailed" {
