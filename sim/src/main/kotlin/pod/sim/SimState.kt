@@ -46,6 +46,8 @@ public data class SimState(
     public val groundAltitude: Distance = home.altitude,
     /** The vehicle's own clock when this snapshot was taken: simulated time since it was made. */
     public val time: Duration = Duration.ZERO,
+    /** Why the simulator ended the flight ("flew into terrain"), or null while it has not. */
+    public val crashed: String? = null,
 ) {
     /** Height above the ground straight below it: what a downward rangefinder measures. */
     public val heightAboveGround: Distance get() = (location.altitude.meters - groundAltitude.meters).m

@@ -108,6 +108,7 @@ public class SimVehicle(
         config.autopilot, config.type, config.systemId, config.bootLocation, config.initialCharge, missionServer,
         readyAfter = config.positionReadyAfter.toDouble(DurationUnit.SECONDS),
         sensorsReadyAfter = config.sensorsReadyAfter.toDouble(DurationUnit.SECONDS),
+        navigationReadyAfter = config.navigationReadyAfter.toDouble(DurationUnit.SECONDS),
         world = SimWorld(config.bootLocation.altitude.meters, config.terrain, config.objects, config.cameraFov, config.camera),
     )
     private val _photos = MutableStateFlow<List<PhotoEvent>>(emptyList())

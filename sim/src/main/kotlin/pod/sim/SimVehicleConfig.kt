@@ -57,6 +57,13 @@ public data class SimVehicleConfig(
      */
     public val sensorsReadyAfter: Duration = positionReadyAfter,
     /**
+     * Simulated time after boot before the estimator's position is good enough to navigate
+     * (ArduCopter's position_ok): until then an ArduCopter refuses the modes that need a position
+     * ("Mode change to GUIDED failed: requires position") while it may already arm in STABILIZE.
+     * Real ArduCopter SITL shows such a window; defaults to [sensorsReadyAfter] (no window).
+     */
+    public val navigationReadyAfter: Duration = sensorsReadyAfter,
+    /**
      * Parameter values it boots with instead of the defaults, as SITL's `--defaults` file:
      * `mapOf("DISARM_DELAY" to 0.0)`. Unknown names fail when the vehicle is created.
      */
@@ -101,6 +108,7 @@ public data class SimVehicleConfig(
         require(timeScale > 0 && timeScale <= 1000) { "timeScale must be in (0, 1000], was $timeScale" }
         require(!positionReadyAfter.isNegative()) { "positionReadyAfter must not be negative, was $positionReadyAfter" }
         require(!sensorsReadyAfter.isNegative()) { "sensorsReadyAfter must not be negative, was $sensorsReadyAfter" }
+        require(!navigationReadyAfter.isNegative()) { "navigationReadyAfter must not be negative, was $navigationReadyAfter" }
         require(!missionStorageReadyAfter.isNegative()) { "missionStorageReadyAfter must not be negative, was $missionStorageReadyAfter" }
         require(physicsStep > Duration.ZERO && physicsStep <= 1.seconds) { "physicsStep must be in (0, 1 s], was $physicsStep" }
         streamRates.forEach { (id, hz) -> require(hz >= 0 && hz <= 1000) { "stream rate for message $id must be in [0, 1000] Hz, was $hz" } }

@@ -10,8 +10,11 @@ internal sealed interface Activity {
     /** Climbing to [altitude] (AMSL), then switching to mode [then] (or holding where it is). */
     data class Takeoff(val altitude: Double, val then: String?) : Activity
 
-    /** Holding at [center]: hover, or circle at [radius]. */
-    data class Hold(val center: Location, val radius: Double, val clockwise: Boolean = true) : Activity
+    /**
+     * Holding at [center]: hover, or circle at [radius]. [braking], when given, is the deceleration
+     * (m/s²) a multirotor stops with on its way there (ArduCopter BRAKE's), instead of its own.
+     */
+    data class Hold(val center: Location, val radius: Double, val clockwise: Boolean = true, val braking: Double? = null) : Activity
 
     /**
      * Flying to [target] at [speed] m/s (null: cruise), then holding there: a multirotor hovers, a

@@ -223,6 +223,7 @@ internal class Commands(private val ap: SimAutopilot) {
             }
         }
         if (ap.isPx4 && name == "OFFBOARD") return refused.also { refuse("Offboard mode: no setpoints") }
+        if (!ap.navigationReady && Modes.needsPosition(ap.autopilot, ap.type, name)) return refused.also { refuse("Mode change to $name failed: requires position") }
         ap.fence.refusesModeChange(name)?.let { (text, severity) -> return refused.also { refuse(text, severity) } }
         ap.setMode(name)
         return ACCEPTED

@@ -446,13 +446,17 @@ internal class MissionRunner(private val ap: SimAutopilot) {
         }
     }
 
-    /** Where item [it] points, with its altitude resolved against home (terrain frames count as relative). */
+    /**
+     * Where item [it] points, with its altitude resolved against home (terrain frames count as
+     * relative), or the current altitude where the autopilot reads a zero altitude so ([ItemAltitude]).
+     */
     private fun location(it: MissionItem): Location {
         val here = ap.body.location
         val base = if ((it.x == 0 && it.y == 0) || !it.isGlobal) here else Location(it.latitude, it.longitude)
-        val alt = when (it.frame) {
-            0, 5 -> it.z.toDouble()
-            3, 6, 10, 11 -> ap.home.altitude.meters + it.z
+        val alt = when {
+            ItemAltitude.meansCurrent(ap, it) -> here.altitude.meters
+            it.frame == 0 || it.frame == 5 -> it.z.toDouble()
+            it.frame in RELATIVE_FRAMES -> ap.home.altitude.meters + it.z
             else -> here.altitude.meters
         }
         return base.copy(altitude = alt.m)
@@ -464,6 +468,8 @@ internal class MissionRunner(private val ap: SimAutopilot) {
             NAV_LOITER_TO_ALT, NAV_SPLINE_WAYPOINT, NAV_VTOL_TAKEOFF, NAV_VTOL_LAND, NAV_DELAY, NAV_CONTINUE_AND_CHANGE_ALT,
         )
         private const val MAX_ITEMS_PER_STEP = 64
+        /** GLOBAL_RELATIVE_ALT, its _INT form and the terrain frames (flown here as relative). */
+        private val RELATIVE_FRAMES = setOf(3, 6, 10, 11)
         /** The NAV items a multirotor flies a waypoint through to (ArduCopter's ModeAuto::set_next_wp). */
         private val THROUGH_TO = setOf(NAV_WAYPOINT, NAV_LOITER_UNLIM, NAV_LOITER_TIME)
     }

@@ -32,7 +32,20 @@ internal enum class Behaviour {
 /** Flight-mode semantics per autopilot flavour; names and numbers come from FlightModes. */
 internal object Modes {
     private val planeNotArmable = setOf("RTL", "QRTL", "QLAND", "LOITER_ALT_QLAND")
-    private val copterNotArmable = setOf("AUTO", "AUTO_RTL", "RTL", "SMART_RTL", "LAND", "CIRCLE", "FLIP", "AUTOTUNE", "AVOID_ADSB", "FOLLOW")
+    // ArduCopter/mode.h: the modes whose allows_arming() is false (BRAKE included: a copter left in
+    // BRAKE by a ground station's hold will not arm, "Arm: Mode not armable").
+    private val copterNotArmable = setOf("AUTO", "AUTO_RTL", "RTL", "SMART_RTL", "LAND", "CIRCLE", "FLIP", "AUTOTUNE", "AVOID_ADSB", "FOLLOW", "BRAKE")
+
+    /**
+     * ArduCopter's modes whose requires_GPS() is true (ArduCopter/mode.h): Copter::set_mode refuses
+     * them until the estimator has a position ("Mode change to GUIDED failed: requires position",
+     * ArduCopter/mode.cpp), while STABILIZE, ALT_HOLD and LAND need none.
+     */
+    private val copterNeedsPosition = setOf("AUTO", "GUIDED", "LOITER", "RTL", "CIRCLE", "DRIFT", "POSHOLD", "BRAKE", "THROW", "SMART_RTL", "FOLLOW", "ZIGZAG", "AUTO_RTL")
+
+    /** Whether ArduCopter refuses mode [name] while its estimator has no position. */
+    fun needsPosition(autopilot: Autopilot, type: VehicleType, name: String): Boolean =
+        autopilot != Autopilot.PX4 && type.isMultirotor && name in copterNeedsPosition
 
     /** The behaviour of mode [name], or null when the simulated airframe cannot fly it. */
     fun behaviour(autopilot: Autopilot, type: VehicleType, name: String): Behaviour? = when {

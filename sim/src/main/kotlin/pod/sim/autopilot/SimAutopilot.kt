@@ -44,6 +44,8 @@ internal class SimAutopilot(
     private val readyAfter: Double = 2.0,
     /** Simulated seconds after boot before the sensors pass the pre-arm checks (never before [readyAfter] matters). */
     private val sensorsReadyAfter: Double = readyAfter,
+    /** Simulated seconds after boot before the estimator's position is good enough to navigate (ArduCopter's position_ok). */
+    private val navigationReadyAfter: Double = sensorsReadyAfter,
     /** The ground under it and the objects its camera sees: flat at [home]'s altitude unless given. */
     val world: SimWorld = SimWorld(home.altitude.meters),
 ) {
@@ -101,6 +103,12 @@ internal class SimAutopilot(
      */
     val positionReady: Boolean get() = time >= readyAfter
 
+    /**
+     * True once the estimator's position is good enough for the modes that navigate (ArduCopter's
+     * Copter::position_ok); before, ArduCopter refuses GUIDED, AUTO, BRAKE… with "requires position".
+     */
+    val navigationReady: Boolean get() = time >= maxOf(readyAfter, navigationReadyAfter)
+
     /** True once the inertial sensors have settled (ArduPilot SITL: "Accels inconsistent" until then). */
     val sensorsReady: Boolean get() = time >= sensorsReadyAfter
 
@@ -120,7 +128,7 @@ internal class SimAutopilot(
         headingDeg = body.heading, charge = charge, armed = armed, landedState = landedState(),
         customMode = FlightModes.customMode(autopilot, type, modeName) ?: 0, modeName = modeName,
         airspeed = body.airspeed, throttle = body.throttle, missionCurrent = missionServer.current, positionReady = positionReady,
-        target = target(), groundAltitude = ground.m, time = time.seconds,
+        target = target(), groundAltitude = ground.m, time = time.seconds, crashed = crashed,
     )
 
     private fun target(): Location? = when (val a = activity) {
@@ -204,7 +212,9 @@ internal class SimAutopilot(
         charge = (if (armed) charge - dt / FULL_DRAIN_SECONDS else charge + dt / FULL_RECHARGE_SECONDS).coerceIn(0.0, 1.0)
         missionChanged()
         val guidance = guidance()
-        body = airframe.step(body, guidance, performance(), ground, armed, dt)
+        val braking = (activity as? Activity.Hold)?.braking
+        body = airframe.step(body, guidance, performance().let { p -> if (braking == null) p else p.copy(acceleration = maxOf(p.acceleration, braking)) }, ground, armed, dt)
+        checkTerrainClearance(guidance)
         afterStep()
         fence.step()
         for (shot in camera.step(time, body.location, if (activity == Activity.Mission) missionServer.current else null)) {
@@ -240,6 +250,28 @@ internal class SimAutopilot(
         Activity.Mission -> mission.guidance()
         is Activity.Cruise -> Guidance.Cruise(a.heading, a.altitude)
         is Activity.Descending -> Guidance.Descend(a.over, a.rate)
+    }
+
+    /**
+     * What the simulator did to a vehicle it saw fly into the ground, or null: flying on (not
+     * climbing out of a take-off, not landing) lower than [TERRAIN_CLEARANCE] above the ground
+     * while moving over it. Not an autopilot's behaviour but the world's: the vehicle disarms and
+     * drops, saying "Crash: flew into terrain" (CRITICAL), so a ground station that sends a vehicle
+     * along the ground sees its flight fail instead of a track that no real vehicle could fly.
+     */
+    var crashed: String? = null
+        private set
+
+    private fun checkTerrainClearance(guidance: Guidance) {
+        if (!armed || body.onGround || guidance is Guidance.Climb || guidance is Guidance.Land || guidance is Guidance.Glide) return
+        val state = landedState()
+        if (state == LandedState.TAKEOFF || state == LandedState.LANDING) return
+        val moving = kotlin.math.hypot(body.velocityNorth, body.velocityEast) > TERRAIN_MOVING_SPEED
+        if (!moving || body.location.altitude.meters - ground >= TERRAIN_CLEARANCE) return
+        crashed = "flew into terrain"
+        text(Severity.CRITICAL, "Crash: flew into terrain")
+        activity = Activity.Parked
+        disarm()
     }
 
     private fun afterStep() {
@@ -341,7 +373,7 @@ internal class SimAutopilot(
                 multirotor -> Activity.Descending(if (name == "ALT_HOLD") null else body.location, pilotDescentRate())
                 else -> holdHere()
             }
-            Behaviour.HOLD, Behaviour.GUIDED -> if (flying) holdHere() else Activity.Parked
+            Behaviour.HOLD, Behaviour.GUIDED -> if (flying) holdHere(if (name == "BRAKE" && !isPx4) BRAKE_DECELERATION else null) else Activity.Parked
             Behaviour.CIRCLE -> if (!flying) {
                 Activity.Parked
             } else if (multirotor) {
@@ -382,9 +414,22 @@ internal class SimAutopilot(
         }
         )
 
-    /** Holding here: hovering, or circling at the loiter radius. */
-    fun holdHere(): Activity = if (multirotor) {
-        Activity.Hold(body.location, 0.0)
+    /**
+     * Holding here: a multirotor hovers where it stops, braking at [braking] m/s² (null: its own
+     * acceleration limit), not where it was when told (it would overshoot and fly back); a plane
+     * circles at the loiter radius. ArduCopter BRAKE stops at BRAKE_MODE_DECEL_RATE
+     * (ArduCopter/mode_brake.cpp ModeBrake::init: the position controller's stopping point at that
+     * deceleration); GUIDED's entry holds the waypoint controller's stopping point
+     * (ArduCopter/mode_guided.cpp ModeGuided::init); PX4 Hold the braking position
+     * (src/modules/navigator/loiter.cpp Loiter::on_activation, set_loiter_position from the
+     * multicopter's stopping point, MPC_ACC_HOR).
+     */
+    fun holdHere(braking: Double? = null): Activity = if (multirotor) {
+        val a = braking ?: performance().acceleration
+        val speed = kotlin.math.hypot(body.velocityNorth, body.velocityEast)
+        val distance = speed * speed / (2 * a)
+        val stop = if (speed < 0.1) body.location else moved(body.location, body.velocityNorth / speed * distance, body.velocityEast / speed * distance, 0.0)
+        Activity.Hold(stop, 0.0, braking = braking)
     } else {
         loiterRadius().let { (r, cw) -> Activity.Hold(body.location, r, cw) }
     }
@@ -426,5 +471,11 @@ internal class SimAutopilot(
         const val FULL_DRAIN_SECONDS = 20 * 60.0
         /** An empty pack is full again after an hour on the ground (a charging pad or a swap). */
         const val FULL_RECHARGE_SECONDS = 60 * 60.0
+        /** ArduCopter BRAKE's deceleration, m/s² (BRAKE_MODE_DECEL_RATE, 750 cm/s², ArduCopter/config.h). */
+        const val BRAKE_DECELERATION = 7.5
+        /** How high above the ground a vehicle flying away from a take-off or landing must stay, m. */
+        const val TERRAIN_CLEARANCE = 1.0
+        /** Over the ground faster than this, m/s, a vehicle counts as flying along it rather than hovering. */
+        const val TERRAIN_MOVING_SPEED = 1.0
     }
 }
