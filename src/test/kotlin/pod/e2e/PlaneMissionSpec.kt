@@ -25,7 +25,7 @@ import pod.sim.SimFlavor
 /** ArduPlane behaviour that only shows when Pod's missions meet the real firmware's rules (issue 11). */
 class PlaneMissionSpec : StringSpec({
 
-    "a plane mission ending in an unlimited loiter completes once the plane circles the loiter point, not on its way there" {
+    "a plane mission ending in an unlimited loiter reports loitering once the plane circles the loiter point, not on its way there" {
         // 10×: position reports close enough together to see where the plane was when the run completed.
         virtualRun { withVehicle(SimFlavor.ARDUPLANE) { fleet, v, vehicle, sim ->
             val home = sim.config.home
@@ -34,7 +34,7 @@ class PlaneMissionSpec : StringSpec({
             val mission = Mission("loiter", null, listOf(MissionStep.TakeOff(home.at(0, 0, 40.0), 15.deg), MissionStep.Loiter(center, 15.m, LoiterDuration.Unlimited)))
             // Where the plane is when the run reports completion (at 30× it flies on 450 m a second).
             var atCompletion: pod.core.vehicle.Position? = null
-            withTimeout(30.minutes) { fleet.fly(v, mission) { if (it == MissionEvent.Completed) atCompletion = vehicle.telemetry.position.value } }
+            withTimeout(30.minutes) { fleet.flyUntilLoitering(v, mission) { if (it is MissionEvent.Loitering) atCompletion = vehicle.telemetry.position.value } }
             val p = atCompletion!!
             val d = p.location.distanceTo(center.copy(altitude = p.location.altitude)).meters
             d shouldBeLessThan 50.0
@@ -70,13 +70,13 @@ class PlaneMissionSpec : StringSpec({
         virtualRun { withVehicle(SimFlavor.ARDUPLANE) { fleet, v, vehicle, sim ->
             val home = sim.config.home
             val first = Mission("first", null, listOf(MissionStep.TakeOff(home.at(0, 0, 40.0), 15.deg), MissionStep.Loiter(home.at(400, 0, 50.0), 80.m, LoiterDuration.Unlimited)))
-            withTimeout(30.minutes) { fleet.fly(v, first) {} }
+            withTimeout(30.minutes) { fleet.flyUntilLoitering(v, first) }
             vehicle.telemetry.mode.value!!.name shouldBe "AUTO"
             var lowest = Double.MAX_VALUE
             val watching = launch { vehicle.telemetry.position.collect { p -> if (p != null) lowest = minOf(lowest, p.relativeAltitude.meters) } }
             val end = home.at(0, 600, 60.0)
             val second = Mission("second", null, listOf(MissionStep.Waypoint(home.at(300, 300, 60.0)), MissionStep.Loiter(end, 80.m, LoiterDuration.Unlimited)))
-            withTimeout(30.minutes) { fleet.fly(v, second) {} }
+            withTimeout(30.minutes) { fleet.flyUntilLoitering(v, second) }
             watching.cancel()
             lowest shouldBeGreaterThan 40.0
             vehicle.telemetry.position.value!!.location.distanceTo(end.copy(altitude = vehicle.telemetry.position.value!!.location.altitude)).meters shouldBeLessThan 100.0

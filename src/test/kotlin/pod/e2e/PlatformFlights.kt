@@ -1,9 +1,33 @@
 package pod.e2e
 
 import kotlin.math.roundToLong
+import kotlinx.coroutines.async
 import pod.core.units.Location
 import pod.core.units.m
 
 /** [this] moved [north] and [east] metres at [height] above home, on the wire's 10⁻⁷° grid. */
 internal fun Location.at(north: Int, east: Int, height: Double): Location =
     offset(north.m, east.m).let { Location((it.latitude * 1e7).roundToLong() / 1e7, (it.longitude * 1e7).roundToLong() / 1e7, height.m) }
+
+/**
+ * Flies [mission], which ends in an unlimited loiter, until [vehicle] reports itself established
+ * on it ([pod.core.platform.MissionEvent.Loitering]), then cancels the run, as a program's `until`
+ * would; fails if the run ends by itself first (such a mission runs until cancelled).
+ */
+internal suspend fun pod.core.platform.Platform.flyUntilLoitering(
+    vehicle: pod.core.platform.PlatformVehicle,
+    mission: pod.core.mission.Mission,
+    report: (pod.core.platform.MissionEvent) -> Unit = {},
+): Unit = kotlinx.coroutines.coroutineScope {
+    val loitering = kotlinx.coroutines.CompletableDeferred<Unit>()
+    val run = async {
+        fly(vehicle, mission) {
+            report(it)
+            if (it is pod.core.platform.MissionEvent.Loitering) loitering.complete(Unit)
+        }
+    }
+    kotlinx.coroutines.selects.select<Unit> {
+        loitering.onAwait { run.cancel() }
+        run.onAwait { error("the run of \"${mission.name}\" ended by itself; a mission ending in an unlimited loiter runs until cancelled") }
+    }
+}

@@ -17,7 +17,9 @@ import pod.mavlink.GroundStation
 import pod.mavlink.GroundStationConfig
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.link.LinkAddress
+import pod.mavlink.link.LinkConditions
 import pod.mavlink.link.MemoryNetwork
+import pod.mavlink.link.TimedDatagram
 import pod.sim.LinkOpener
 import pod.sim.SimFleet
 import pod.sim.SimFlavor
@@ -44,7 +46,13 @@ internal class VirtualFleet(
     val seed: Long,
     up: LinkFaults,
     down: LinkFaults,
+    withheldAtStart: Set<Int> = emptySet(),
 ) {
+    /**
+     * Message ids that do not reach a listening link (a stream the vehicle does not send yet, as a
+     * station sees it); a test may change it while the world runs.
+     */
+    val withheld: MutableSet<Int> = ConcurrentHashMap.newKeySet<Int>().also { it += withheldAtStart }
     /** The test scheduler's clock and a dispatcher on it. */
     val timebase = Timebase(test.testScheduler.timeSource, StandardTestDispatcher(test.testScheduler))
 
@@ -55,7 +63,8 @@ internal class VirtualFleet(
 
     /** The in-memory network everything talks over. */
     val network = MemoryNetwork(test.backgroundScope, timebase) { from, to ->
-        routes(from, to)?.also { models += (to.port in listening) to it }
+        val faults = routes(from, to)?.also { models += (to.port in listening) to it }
+        if (to.port !in listening) faults else Withholding(withheld, faults)
     }
 
     /** What the faults did so far to datagrams towards the ground ([towardsGround]) or away from it, summed over routes. */
@@ -159,9 +168,30 @@ internal fun virtualRun(
     up: LinkFaults = LinkFaults.None,
     down: LinkFaults = LinkFaults.None,
     timeout: Duration = 3.minutes,
+    withheld: Set<Int> = emptySet(),
     block: suspend VirtualFleet.() -> Unit,
 ) = runTest(timeout = timeout) {
-    VirtualFleet(this, seed, up, down).block()
+    VirtualFleet(this, seed, up, down, withheld).block()
+}
+
+/** Drops every datagram that carries one of the message ids [withheld] and passes the rest to [faults]. */
+private class Withholding(private val withheld: Set<Int>, private val faults: LinkConditions?) : LinkConditions {
+    override fun offer(bytes: ByteArray, now: Duration): List<TimedDatagram> = when {
+        messageId(bytes) in withheld -> emptyList()
+        faults == null -> listOf(TimedDatagram(now, bytes))
+        else -> faults.offer(bytes, now)
+    }
+
+    override val nextRelease: Duration? get() = faults?.nextRelease
+
+    override fun release(now: Duration): List<TimedDatagram> = faults?.release(now) ?: emptyList()
+
+    /** The message id of the datagram's first frame (MAVLink 2: bytes 7..9, little-endian; MAVLink 1: byte 5), or -1. */
+    private fun messageId(bytes: ByteArray): Int = when {
+        bytes.size >= 10 && bytes[0] == 0xFD.toByte() -> (bytes[7].toInt() and 0xFF) or ((bytes[8].toInt() and 0xFF) shl 8) or ((bytes[9].toInt() and 0xFF) shl 16)
+        bytes.size >= 6 && bytes[0] == 0xFE.toByte() -> bytes[5].toInt() and 0xFF
+        else -> -1
+    }
 }
 
 /** The engine's events as comparable lines (an error compares by its type and message). */

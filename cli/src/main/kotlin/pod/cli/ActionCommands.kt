@@ -86,7 +86,10 @@ internal class ModeCommand(out: Output) : ActionCommand(out, "mode", "Switch fli
     override suspend fun perform(vehicle: MavlinkVehicle) = vehicle.action.setMode(name).let { "mode ${name.uppercase()}" }
 }
 
-internal class TakeoffCommand(out: Output) : ActionCommand(out, "takeoff", "Take off to ALT metres above home and wait until it is reached (arm first).") {
+internal class TakeoffCommand(out: Output) : ActionCommand(
+    out, "takeoff",
+    "Take off to ALT metres above home and wait until it is reached, from whatever state the vehicle is in: it is switched to its take-off mode and armed first when needed, and the line says so.",
+) {
     init {
         // `pod takeoff -5` is a wrong altitude, said once, not an unknown option plus a missing ALT.
         negativeNumbersAsArguments()
@@ -97,7 +100,15 @@ internal class TakeoffCommand(out: Output) : ActionCommand(out, "takeoff", "Take
         if (!(a > 0 && a <= 10_000)) fail("the altitude must be above 0 m and at most 10000 m, was $it")
         a
     }
-    override suspend fun perform(vehicle: MavlinkVehicle) = vehicle.action.takeoff(altitude.m).let { "at ${altitude} m" }
+    override suspend fun perform(vehicle: MavlinkVehicle): String {
+        val changed = vehicle.action.getAirborne(altitude.m)
+        val before = changed.dropLast(1) // the last is the take-off itself
+        return when {
+            changed.isEmpty() -> "already flying; nothing changed"
+            before.isEmpty() -> "at $altitude m"
+            else -> "at $altitude m (${before.joinToString(", ")})"
+        }
+    }
 }
 
 internal class LandCommand(out: Output) : ActionCommand(out, "land", "Land (a plane through its mission's landing sequence).") {
@@ -167,7 +178,8 @@ internal class StartCommand(out: Output) : ActionCommand(out, "start", "Start th
     override val armHint: String = ", or pass --arm"
 
     override suspend fun perform(vehicle: MavlinkVehicle): String {
-        if (arm && !vehicle.telemetry.armed.value) vehicle.action.arm()
+        // From whatever mode an earlier flight left it in (AUTO, RTL, LAND, BRAKE: not armable).
+        if (arm) vehicle.action.armForFlight()
         vehicle.action.startMission(from)
         return "mission started" + (from?.let { " at item $it" } ?: "")
     }

@@ -53,7 +53,10 @@ internal class RunCommand : CliktCommand(name = "run") {
         val choice = fleetChoice()
         val outcome = try {
             withSystemProperties(choice.toSystemProperties()) {
-                ScriptHost(ScriptClasspath.forScripts()).run(file, scriptArgs) { echo(it, err = true) }
+                ScriptHost(ScriptClasspath.forScripts()).run(
+                    file, scriptArgs,
+                    compiling = { echo("pod: compiling ${file.name} (about 10 s for a new or changed script; later runs start at once)", err = true) },
+                ) { echo(it, err = true) }
             }
         } catch (e: Throwable) {
             // The scripting host may let the cancellation through rather than report it.

@@ -15,6 +15,7 @@ public class EventLines(private val names: (Int) -> String) {
             is EngineEvent.TaskCancelled -> if (event.label.contains(" on [")) "cancel ${event.label}" else null
             is EngineEvent.Flying -> "${names(event.vehicle)} flies '${event.mission.name}' (${steps(event.mission.steps.size)})"
             is EngineEvent.Mission -> mission(names(event.vehicle), event.event)
+            is EngineEvent.Queue -> queue(names(event.vehicle), event.event)
             is EngineEvent.MadeSafe -> "${names(event.vehicle)} made safe: ${event.state}${if (event.confirmed) "" else " (not confirmed)"}"
             is EngineEvent.Picked -> "picked ${event.vehicles.joinToString { names(it) }}"
             is EngineEvent.Released -> "released ${event.vehicles.joinToString { names(it) }}"
@@ -28,7 +29,14 @@ public class EventLines(private val names: (Int) -> String) {
         MissionEvent.Started -> "$name started"
         is MissionEvent.StepStarted -> null
         is MissionEvent.StepDone -> "$name step ${event.step + 1} done"
+        is MissionEvent.Loitering -> "$name loitering at step ${event.step + 1}, until the task is cancelled"
         MissionEvent.Completed -> "$name mission complete"
+    }
+
+    private fun queue(name: String, event: pod.core.queue.QueueEvent): String = when (event) {
+        is pod.core.queue.QueueEvent.Started -> "$name queue: flying ${event.entry}"
+        is pod.core.queue.QueueEvent.Ended -> "$name queue: ${event.entry} ended (${event.reason.name.lowercase()})"
+        is pod.core.queue.QueueEvent.Emptied -> "$name queue: empty, holding"
     }
 
     public companion object {

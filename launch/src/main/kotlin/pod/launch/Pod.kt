@@ -51,6 +51,8 @@ public fun <T> pod(choice: FleetChoice = FleetChoice.fromSystemProperties(), pri
                                 waiting.forEach { (id, lacks) -> if (said.add(id to lacks)) print("vehicle $id: initialising, waiting for its $lacks") }
                             }
                         }
+                        // Arming and mode refusals waited out, exchanges left unanswered: said as they happen.
+                        val waits = launch { showWaits(station, print) }
                         try {
                             val names = { id: Int -> platform.vehicles.value.firstOrNull { it.id == id }?.name ?: "vehicle $id" }
                             Engine(platform).runShowing(names, onLine = print, onEvent = madeSafe::note) {
@@ -59,6 +61,7 @@ public fun <T> pod(choice: FleetChoice = FleetChoice.fromSystemProperties(), pri
                             }
                         } finally {
                             booting.cancel()
+                            waits.cancel()
                         }
                     } finally {
                         station.close()

@@ -95,6 +95,30 @@ suspend fun Program.listing2(lowBattery: Double = 0.3): PlatformVehicle {
     return v
 }
 
+/**
+ * Listing 2 as the Dolphin report writes it: take off, move out, loiter there indefinitely
+ * (`moveAndLoiterPos`) until the battery falls below [lowBattery], then return home and land.
+ * The loiter never ends by itself: `until` ends it. [out] is how far north the vehicle loiters,
+ * [height] its cruise height and [radius] the circle's (a plane needs a wide one).
+ */
+suspend fun Program.loiterUntilLowBattery(lowBattery: Double = 0.3, out: Distance = 150.m, height: Distance = 30.m, radius: Distance = 15.m): PlatformVehicle {
+    val picked = pick { count(1) }
+    val v = picked[0]
+    val home = homeOf(v)
+    message("listing 2: ${v.name} loiters ${out.meters.toInt()} m out until its battery is below ${(lowBattery * 100).toInt()} %")
+    val watch = mission("loiter ${v.name}") {
+        home(home)
+        takeOff(height)
+        move(north = out)
+        moveAndLoiterPos(radius = radius)
+    }
+    execute((watch on v) until { battery(v) < lowBattery })
+    message("listing 2: ${v.name} battery at ${(battery(v) * 100).toInt()} %, returning home")
+    execute(mission("home ${v.name}") { home(home); returnHomeAndLand() } on v)
+    release(picked)
+    return v
+}
+
 /** Listing 3: two vehicles survey two areas concurrently, each returning home when done. */
 suspend fun Program.listing3(): VehicleSet {
     val vehicles = pick { count(2) }

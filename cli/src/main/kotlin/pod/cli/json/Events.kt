@@ -55,7 +55,13 @@ internal fun EngineEvent.toEvent(): Event? {
             MissionEvent.Started -> Event.Mission(at, task, vehicle, "started", step = null, steps = null)
             is MissionEvent.StepStarted -> null
             is MissionEvent.StepDone -> Event.Mission(at, task, vehicle, "step_done", step = e.step, steps = null)
+            is MissionEvent.Loitering -> Event.Mission(at, task, vehicle, "loitering", step = e.step, steps = null)
             MissionEvent.Completed -> Event.Mission(at, task, vehicle, "completed", step = null, steps = null)
+        }
+        is EngineEvent.Queue -> when (val e = event) {
+            is pod.core.queue.QueueEvent.Started -> Event.Queue(at, task, vehicle, "started", e.entry.id, e.entry.element.toString(), reason = null)
+            is pod.core.queue.QueueEvent.Ended -> Event.Queue(at, task, vehicle, "ended", e.entry.id, e.entry.element.toString(), e.reason.name.lowercase())
+            is pod.core.queue.QueueEvent.Emptied -> Event.Queue(at, task, vehicle, "emptied", entry = null, element = null, reason = null)
         }
         is EngineEvent.MadeSafe -> Event.MadeSafe(at, vehicle, state.name, confirmed)
         is EngineEvent.Picked -> Event.Picked(at, vehicles)

@@ -8,10 +8,7 @@ import com.github.ajalt.clikt.parameters.types.double
 import com.github.ajalt.clikt.parameters.types.restrictTo
 import kotlinx.coroutines.cancelChildren
 import kotlinx.coroutines.coroutineScope
-import kotlinx.coroutines.flow.filterNotNull
-import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
-import kotlinx.coroutines.withTimeoutOrNull
 import pod.cli.Output
 import pod.cli.VehicleCommandBase
 import pod.cli.badInput
@@ -20,13 +17,11 @@ import pod.core.queue.MissionQueue
 import pod.core.queue.QueueBusy
 import pod.core.queue.WhenEmpty
 import pod.core.units.m
-import pod.core.vehicle.isAirborne
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.queue.QueueElementRefused
 import pod.mavlink.queue.QueueFlight
 import pod.mavlink.queue.QueueNotFlyable
 import java.io.IOException
-import kotlin.time.Duration.Companion.seconds
 
 /**
  * `pod queue serve`: holds a vehicle's mission queue and flies it ([QueueFlight], waiting when it
@@ -49,7 +44,7 @@ internal class QueueServe(out: Output) : VehicleCommandBase(out, "serve") {
         }
     }.default(ControlAddress.DEFAULT, defaultForHelp = ControlAddress.DEFAULT.toString())
 
-    private val takeoff by option("--takeoff", metavar = "ALT", help = "when the vehicle is on the ground, arm it and take off to ALT metres above home first")
+    private val takeoff by option("--takeoff", metavar = "ALT", help = "when the vehicle is on the ground, take off to ALT metres above home first (switching to its take-off mode and arming as needed)")
         .convert {
             val a = it.toDoubleOrNull() ?: this.fail("not a number of metres: '$it'")
             if (!(a > 0 && a <= 10_000)) this.fail("the altitude must be above 0 m and at most 10000 m, was $it")
@@ -118,13 +113,10 @@ internal class QueueServe(out: Output) : VehicleCommandBase(out, "serve") {
 
     private suspend fun takeOffIfAsked(vehicle: MavlinkVehicle, view: QueueView) {
         val height = takeoff ?: return
-        val t = vehicle.telemetry
-        // Whether it flies is told by its position and landed state: give them a moment to arrive.
-        withTimeoutOrNull(POSITION_WAIT) { t.position.filterNotNull().first() }
-        if (isAirborne(t.landedState.value, t.position.value?.relativeAltitude, t.armed.value)) return
-        view.note("vehicle ${vehicle.systemId}: on the ground: arming and taking off to ${height.plain()} m")
-        if (!t.armed.value) vehicle.action.arm()
-        vehicle.action.takeoff(height.m)
+        if (vehicle.action.isFlying()) return
+        view.note("vehicle ${vehicle.systemId}: on the ground: taking off to ${height.plain()} m")
+        val changed = vehicle.action.getAirborne(height.m)
+        view.note("vehicle ${vehicle.systemId}: ${changed.joinToString(", ")}")
     }
 
     /** What the host answers [request] with; called on the server's threads ([pod.core.queue.MissionQueue] is thread-safe). */
@@ -147,9 +139,5 @@ internal class QueueServe(out: Output) : VehicleCommandBase(out, "serve") {
         val t = vehicle.telemetry
         val state = VehicleJson(vehicle.systemId, t.mode.value?.name, t.armed.value, t.position.value?.relativeAltitude?.meters)
         return QueueResponse(ok = true, entry = entry, ended = ended, status = queue.status.value.toJson(), vehicle = state)
-    }
-
-    private companion object {
-        val POSITION_WAIT = 5.seconds
     }
 }

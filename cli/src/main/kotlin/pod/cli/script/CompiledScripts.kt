@@ -6,6 +6,8 @@ import kotlin.script.experimental.api.ScriptCompilationConfiguration
 import kotlin.script.experimental.api.SourceCode
 import kotlin.script.experimental.api.dependencies
 import kotlin.script.experimental.api.importScripts
+import kotlin.script.experimental.api.CompiledScript
+import kotlin.script.experimental.jvm.CompiledJvmScriptsCache
 import kotlin.script.experimental.jvm.JvmDependency
 import kotlin.script.experimental.jvmhost.CompiledScriptJarsCache
 
@@ -32,6 +34,15 @@ internal object CompiledScripts {
             else -> File(System.getProperty("user.home"), ".cache/pod/scripts")
         }
         return dir.takeIf { it.isDirectory || it.mkdirs() }
+    }
+
+    /** [cache], calling [onMiss] when it holds no compiled copy of a script (which is then compiled). */
+    fun noticingMisses(cache: CompiledJvmScriptsCache, onMiss: () -> Unit): CompiledJvmScriptsCache = object : CompiledJvmScriptsCache {
+        override fun get(script: SourceCode, scriptCompilationConfiguration: ScriptCompilationConfiguration): CompiledScript? =
+            cache.get(script, scriptCompilationConfiguration).also { if (it == null) onMiss() }
+
+        override fun store(compiledScript: CompiledScript, script: SourceCode, scriptCompilationConfiguration: ScriptCompilationConfiguration) =
+            cache.store(compiledScript, script, scriptCompilationConfiguration)
     }
 
     /** A jar cache in [directory]. */

@@ -45,9 +45,12 @@ internal sealed interface ScriptOutcome {
  * artifacts (group `pod`) is skipped because they are already there.
  */
 internal class ScriptHost(private val classpath: List<File>, private val cacheDirectory: File? = CompiledScripts.directory()) {
-    /** Compiles [script] and runs it with [args]; compiler warnings go to [warn]. */
-    fun run(script: File, args: List<String>, warn: (String) -> Unit): ScriptOutcome {
-        val result = BasicJvmScriptingHost().eval(script.toScriptSource(), compilation(), evaluation(args))
+    /**
+     * Compiles [script] (unless a compiled copy is cached; [compiling] is told when it is not, as
+     * that takes seconds) and runs it with [args]; compiler warnings go to [warn].
+     */
+    fun run(script: File, args: List<String>, compiling: () -> Unit = {}, warn: (String) -> Unit): ScriptOutcome {
+        val result = BasicJvmScriptingHost().eval(script.toScriptSource(), compilation(compiling), evaluation(args))
         result.reports.filter { it.severity == ScriptDiagnostic.Severity.WARNING }.forEach { warn(render(it, script)) }
         return when (result) {
             is ResultWithDiagnostics.Failure -> ScriptOutcome.CompileFailed(
@@ -58,7 +61,7 @@ internal class ScriptHost(private val classpath: List<File>, private val cacheDi
         }
     }
 
-    private fun compilation(): ScriptCompilationConfiguration {
+    private fun compilation(compiling: () -> Unit): ScriptCompilationConfiguration {
         val base = createJvmCompilationConfigurationFromTemplate<MainKtsScript>()
         val refinements = base[ScriptCompilationConfiguration.refineConfigurationOnAnnotations].orEmpty().map { data ->
             val handler = data.handler
@@ -75,11 +78,8 @@ internal class ScriptHost(private val classpath: List<File>, private val cacheDi
             hostConfiguration.update { host ->
                 host.with {
                     jvm {
-                        if (cacheDirectory == null) {
-                            compilationCache(CompiledJvmScriptsCache.NoCache)
-                        } else {
-                            compilationCache(CompiledScripts.cache(cacheDirectory))
-                        }
+                        val cache = if (cacheDirectory == null) CompiledJvmScriptsCache.NoCache else CompiledScripts.cache(cacheDirectory)
+                        compilationCache(CompiledScripts.noticingMisses(cache, compiling))
                     }
                 }
             }

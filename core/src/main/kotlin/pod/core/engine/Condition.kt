@@ -33,6 +33,13 @@ public interface ConditionScope {
 
     /** Where [vehicle] is, or null before its first position report. */
     public fun position(vehicle: PlatformVehicle): Position? = read(vehicle.position)
+
+    /**
+     * True while [vehicle] circles the unlimited loiter that ends the mission it is flying
+     * ([pod.core.platform.MissionEvent.Loitering]), from the moment it is established on the
+     * circle until that task ends: `waitFor { loitering(v) }`. False where no engine tracks it.
+     */
+    public fun loitering(vehicle: PlatformVehicle): Boolean = false
 }
 
 /** A condition that holds when both hold. */

@@ -46,6 +46,9 @@ public class Engine(
     /** Ids of the vehicles some program on this engine holds. */
     internal val pickedByAny = MutableStateFlow<Set<Int>>(emptySet())
 
+    /** Ids of the vehicles established on the unlimited loiter that ends the mission they fly (`loitering(v)`). */
+    internal val loitering = MutableStateFlow<Set<Int>>(emptySet())
+
     /** Bumped with every event; conditions that read no telemetry are evaluated again when it changes. */
     internal val revision: StateFlow<Long> = _revision.asStateFlow()
 

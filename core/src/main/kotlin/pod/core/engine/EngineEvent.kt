@@ -30,6 +30,9 @@ public sealed interface EngineEvent {
     /** What a vehicle reported while task [task] flew it. */
     public data class Mission(override val at: Duration, val task: Int, val vehicle: Int, val event: MissionEvent) : EngineEvent
 
+    /** What the queue that task [task] flies on [vehicle] did: an element started or ended, or it ran empty. */
+    public data class Queue(override val at: Duration, val task: Int, val vehicle: Int, val event: pod.core.queue.QueueEvent) : EngineEvent
+
     /** A vehicle was put in [state] after its task was cancelled or failed; [confirmed] is false when the vehicle did not confirm. */
     public data class MadeSafe(override val at: Duration, val vehicle: Int, val state: SafeState, val confirmed: Boolean) : EngineEvent
 

@@ -107,7 +107,7 @@ public class Program internal constructor(
 
     /** Suspends until [condition] holds (evaluated again only when what it reads changes). */
     public suspend fun await(condition: Condition) {
-        awaitCondition(engine.revision, condition)
+        awaitCondition(engine.revision, condition, engine.loitering)
     }
 
     internal fun releaseAll() {

@@ -1,5 +1,6 @@
 package pod.core.engine
 
+import kotlinx.coroutines.flow.update
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.NonCancellable
 import kotlinx.coroutines.async
@@ -54,19 +55,19 @@ internal class TaskRunner(private val engine: Engine, private val program: Progr
             is Task.Concurrent -> coroutineScope { task.tasks.forEach { launch { run(it, vehicles, id) } } }
             is Task.Until -> until(task, vehicles, id)
             is Task.WaitFor -> {
-                awaitCondition(engine.revision, task.condition)
+                awaitCondition(engine.revision, task.condition, engine.loitering)
                 run(task.task, vehicles, id)
             }
             is Task.AllOf -> coroutineScope {
                 task.branches.forEach { branch ->
                     launch {
-                        awaitCondition(engine.revision, branch.condition)
+                        awaitCondition(engine.revision, branch.condition, engine.loitering)
                         run(branch.task, vehicles, id)
                     }
                 }
             }
             is Task.OneOf -> {
-                val chosen = awaitValue(engine.revision) { task.branches.firstOrNull { with(it.condition) { holds() } } }
+                val chosen = awaitValue(engine.revision, engine.loitering) { task.branches.firstOrNull { with(it.condition) { holds() } } }
                 run(chosen.task, vehicles, id)
             }
             is Task.During -> withTimeoutOrNull(engine.wall(task.limit)) { run(task.task, vehicles, id) }
@@ -79,7 +80,7 @@ internal class TaskRunner(private val engine: Engine, private val program: Progr
 
     private suspend fun until(task: Task.Until, vehicles: VehicleSet?, id: Int) = coroutineScope {
         val body = async { run(task.task, vehicles, id) }
-        val stop = async { awaitCondition(engine.revision, task.condition) }
+        val stop = async { awaitCondition(engine.revision, task.condition, engine.loitering) }
         select {
             body.onAwait { stop.cancel() }
             stop.onAwait { body.cancel() }
@@ -108,13 +109,27 @@ internal class TaskRunner(private val engine: Engine, private val program: Progr
     private suspend fun flyOne(task: Task.Fly, vehicle: PlatformVehicle, id: Int) {
         engine.emit(EngineEvent.Flying(engine.now(), id, vehicle.id, task.mission))
         steer(task.label, vehicle, task.onCancel) {
-            engine.platform.fly(vehicle, task.mission) { engine.emit(EngineEvent.Mission(engine.now(), id, vehicle.id, it)) }
+            try {
+                engine.platform.fly(vehicle, task.mission) {
+                    if (it is pod.core.platform.MissionEvent.Loitering) engine.loitering.update { held -> held + vehicle.id }
+                    engine.emit(EngineEvent.Mission(engine.now(), id, vehicle.id, it))
+                }
+            } finally {
+                engine.loitering.update { held -> held - vehicle.id }
+            }
         }
     }
 
     private suspend fun flyQueue(task: Task.FlyQueue, vehicles: VehicleSet, id: Int) {
         val vehicle = vehicles.singleOrNull() ?: throw if (vehicles.isEmpty()) UnboundTask(task.label) else QueueNeedsOneVehicle(vehicles.size)
-        steer(task.label, vehicle, task.onCancel) { engine.platform.flyQueue(vehicle, task.queue, task.whenEmpty) }
+        steer(task.label, vehicle, task.onCancel) {
+            coroutineScope {
+                // The queue's own events, as the program's: `pod run` shows elements start and end.
+                val relay = launch(start = kotlinx.coroutines.CoroutineStart.UNDISPATCHED) { task.queue.events.collect { engine.emit(EngineEvent.Queue(engine.now(), id, vehicle.id, it)) } }
+                engine.platform.flyQueue(vehicle, task.queue, task.whenEmpty)
+                relay.cancel()
+            }
+        }
     }
 
     private suspend fun survey(task: Task.Survey, vehicles: VehicleSet) {

@@ -39,6 +39,11 @@ public enum class MissionCompletion {
     /** The mission ends with a landing (a landing point or return home): done once landed and disarmed. */
     LANDED,
 
-    /** The mission ends in an unlimited loiter: done once the vehicle is loitering at that point. */
+    /**
+     * The mission ends in an unlimited loiter: it is never done by itself. The vehicle circles
+     * there until the task is cancelled (Dolphin's `moveAndLoiterPos … until { battery(v) < 0.3 }`);
+     * being established on the circle is reported ([pod.core.platform.MissionEvent.Loitering]) and
+     * can be waited for (`waitFor { loitering(v) }`).
+     */
     LOITERING,
 }

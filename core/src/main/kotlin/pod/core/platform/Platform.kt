@@ -22,7 +22,8 @@ public interface Platform {
     public val timeScale: Double get() = 1.0
 
     /**
-     * Flies [mission] on [vehicle] and returns when it is complete as [Mission.completion] defines.
+     * Flies [mission] on [vehicle] and returns when it is complete as [Mission.completion] defines
+     * (a mission ending in an unlimited loiter runs until cancelled, reporting [MissionEvent.Loitering]).
      * Reports what happens through [report]. Throws a typed exception when the vehicle refuses,
      * fails or is lost ([pod.core.vehicle.VehicleLost]). When the caller is cancelled this returns
      * promptly (with the CancellationException) without making the vehicle safe: the engine calls
@@ -84,6 +85,12 @@ public sealed interface MissionEvent {
 
     /** The vehicle finished mission step [step]. */
     public data class StepDone(val step: Int) : MissionEvent
+
+    /**
+     * The vehicle is established on the unlimited loiter that ends the mission, step [step]: it
+     * circles there until the task is cancelled (a mission ending so never completes).
+     */
+    public data class Loitering(val step: Int) : MissionEvent
 
     /** The mission is complete. */
     public data object Completed : MissionEvent

@@ -17,6 +17,14 @@ public fun isAirborne(landed: LandedState, heightAboveHome: Distance?, armed: Bo
     landed == LandedState.TAKEOFF || landed == LandedState.IN_AIR || landed == LandedState.LANDING ||
         (armed != false && heightAboveHome != null && heightAboveHome > CLEAR_OF_GROUND)
 
+/**
+ * Whether a vehicle is on the ground: its landed state says so, or, while that is unknown
+ * (UNDEFINED: an autopilot not streaming EXTENDED_SYS_STATE yet, or at all), it is no higher than
+ * [CLEAR_OF_GROUND] above home.
+ */
+public fun isOnGround(landed: LandedState, heightAboveHome: Distance?): Boolean =
+    landed == LandedState.ON_GROUND || (landed == LandedState.UNDEFINED && heightAboveHome != null && heightAboveHome <= CLEAR_OF_GROUND)
+
 /** How far above home a vehicle must be for its height alone to say it is airborne (see [isAirborne]). */
 public val CLEAR_OF_GROUND: Distance = 1.m
 

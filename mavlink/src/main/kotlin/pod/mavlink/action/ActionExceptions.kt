@@ -44,8 +44,9 @@ public class ActionNotConfirmed(
 ) : ActionException("$action was accepted but the vehicle did not show $expected within ${waited.toReadable()} (last seen: $observed)")
 
 /**
- * The vehicle was still initialising when [waited] ran out: it kept refusing to arm with
- * [reason] (the autopilot's own words), a refusal that clears by waiting after boot.
+ * The vehicle was still initialising when [waited] ran out: it kept refusing to [action] ("arm",
+ * "switch to GUIDED") with [reason] (the autopilot's own words), a refusal that clears by waiting
+ * after boot.
  */
 public class VehicleNotReady(
     /** The vehicle's system id. */
@@ -54,7 +55,9 @@ public class VehicleNotReady(
     public val reason: String,
     /** How long Pod waited. */
     public val waited: Duration,
-) : ActionException("vehicle $systemId was still not ready to arm after ${waited.toReadable()}: $reason")
+    /** What it kept refusing. */
+    public val action: String = "arm",
+) : ActionException("vehicle $systemId was still not ready to $action after ${waited.toReadable()}: $reason")
 
 /** [action] needs the motors armed and vehicle [systemId] reports them disarmed; nothing was sent. */
 public class VehicleDisarmed(

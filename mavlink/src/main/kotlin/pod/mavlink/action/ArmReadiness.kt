@@ -33,6 +33,21 @@ internal object ArmReadiness {
         "fence", "interlock", "emergency stop", "rc not", "radio", "disarm switch",
     )
 
+    /**
+     * Mode changes refused until the estimator has a position: ArduCopter's Copter::set_mode
+     * ("Mode change to GUIDED failed: requires position", "need alt estimate", ArduCopter/mode.cpp);
+     * PX4's commander while a mode's requirements are not met yet ("Switching to Hold is currently
+     * not available", ModeUtil/mode_requirements.cpp), which waiting clears only while initialising.
+     */
+    private val MODE_INITIALISING = listOf("requires position", "need alt estimate", "need position")
+
+    /** The reason to wait for a refused mode change, or null when waiting will not clear it. */
+    fun modeWaitFor(lines: List<String>, initialising: Boolean): String? {
+        val lower = lines.map { it.lowercase() }
+        val waiting = lines.filterIndexed { i, _ -> MODE_INITIALISING.any { it in lower[i] } || (initialising && "currently not available" in lower[i]) }
+        return waiting.takeIf { it.isNotEmpty() }?.joinToString("; ")
+    }
+
     /** The reason to wait for, or null when [lines] say the refusal will not clear by waiting. */
     fun waitFor(lines: List<String>, initialising: Boolean): String? {
         val lower = lines.map { it.lowercase() }

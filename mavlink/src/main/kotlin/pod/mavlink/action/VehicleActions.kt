@@ -21,6 +21,7 @@ import pod.core.vehicle.Autopilot
 import pod.core.vehicle.ConnectionState
 import pod.core.vehicle.LandedState
 import pod.core.vehicle.isAirborne
+import pod.core.vehicle.isOnGround
 import pod.core.vehicle.VehicleLost
 import pod.core.vehicle.VehicleType
 import pod.mavlink.MavFrames
@@ -86,21 +87,8 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
      * the autopilot's reason ([CommandRejected]).
      */
     public suspend fun arm(force: Boolean = false) {
-        val started = vehicle.clock.markNow()
-        try {
-            while (true) {
-                try {
-                    command(VehicleCommand(COMPONENT_ARM_DISARM, param1 = 1f, param2 = if (force) ARM_FORCE_MAGIC.toFloat() else 0f))
-                    break
-                } catch (e: CommandRejected) {
-                    val reason = ArmReadiness.waitFor(e.statusTexts, initialising()) ?: throw e
-                    if (started.elapsedNow() + ARM_RETRY > readyTimeout) throw VehicleNotReady(vehicle.systemId, reason, readyTimeout)
-                    _waitingFor.value = reason
-                    delay(ARM_RETRY)
-                }
-            }
-        } finally {
-            _waitingFor.value = null
+        retryWhileInitialising("arm", { ArmReadiness.waitFor(it.statusTexts, initialising()) }) {
+            command(VehicleCommand(COMPONENT_ARM_DISARM, param1 = 1f, param2 = if (force) ARM_FORCE_MAGIC.toFloat() else 0f))
         }
         confirm("arm", "armed", vehicle.telemetry.armed) { it }
     }
@@ -121,7 +109,10 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
 
     /**
      * Switches to the mode called [name] ("GUIDED", "AUTO", "AUTO.MISSION" on PX4, …) and waits
-     * until the heartbeat reports it. Throws [UnknownMode] for a name the vehicle does not have.
+     * until the heartbeat reports it. Throws [UnknownMode] for a name the vehicle does not have. A
+     * refusal that clears once the estimator has a position (ArduCopter's "Mode change to GUIDED
+     * failed: requires position" after boot) is waited out like [arm]'s, with [waitingFor] saying
+     * why, for up to [readyTimeout]; then [VehicleNotReady].
      */
     public suspend fun setMode(name: String) {
         val (autopilot, type) = airframe()
@@ -134,13 +125,37 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
             VehicleCommand(DO_SET_MODE, param1 = MODE_FLAG_CUSTOM_MODE_ENABLED.toFloat(), param2 = custom.toFloat())
         }
         try {
-            command(command)
+            retryWhileInitialising("switch to $name", { ArmReadiness.modeWaitFor(it.statusTexts, initialising()) }) { command(command) }
         } catch (e: CommandRejected) {
             if (e.result != CommandResult.UNSUPPORTED) throw e
             // Autopilots older than DO_SET_MODE take the (unacknowledged) SET_MODE message.
             vehicle.send(SetMode.builder().targetSystem(vehicle.systemId).baseMode(EnumValue.create<MavMode>(1)).customMode(custom).build())
         }
         confirm("set mode $name", "mode $name", vehicle.telemetry.mode) { it?.customMode == custom }
+    }
+
+    /**
+     * Runs [attempt] again every [ARM_RETRY] while the vehicle refuses it with a reason that clears
+     * by waiting ([waitFor] names it; null: it will not), showing the reason in [waitingFor], for
+     * up to [readyTimeout] in all; then [VehicleNotReady]. Other refusals are thrown as they are.
+     */
+    private suspend fun retryWhileInitialising(action: String, waitFor: (CommandRejected) -> String?, attempt: suspend () -> Unit) {
+        val started = vehicle.clock.markNow()
+        try {
+            while (true) {
+                try {
+                    attempt()
+                    return
+                } catch (e: CommandRejected) {
+                    val reason = waitFor(e) ?: throw e
+                    if (started.elapsedNow() + ARM_RETRY > readyTimeout) throw VehicleNotReady(vehicle.systemId, reason, readyTimeout, action)
+                    _waitingFor.value = reason
+                    delay(ARM_RETRY)
+                }
+            }
+        } finally {
+            _waitingFor.value = null
+        }
     }
 
     /**
@@ -159,7 +174,7 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
         val (autopilot, type) = airframe()
         when {
             autopilot == Autopilot.PX4 -> {
-                val home = homeAltitude() ?: throw ActionUnsupported("takeoff", "home altitude unknown (no HOME_POSITION or GLOBAL_POSITION_INT yet)")
+                val home = awaitHomeAltitude()
                 command(VehicleCommand(NAV_TAKEOFF, param4 = Float.NaN, param5 = Double.NaN, param6 = Double.NaN, param7 = (home + altitude.meters).toFloat()))
             }
             isPlane(type) -> {
@@ -181,6 +196,35 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
             it != null && it.relativeAltitude.meters >= altitude.meters - tolerance
         }
     }
+
+    /**
+     * Gets the vehicle into the air at [height] above home from whatever state it was left in
+     * (freshly booted, just landed, left in RTL, LAND, BRAKE or AUTO): nothing when it already
+     * flies; otherwise into its take-off mode first (GUIDED on an ArduCopter; out of a mode it will
+     * not arm in on ArduPlane and PX4), waiting out refusals that clear by waiting, then armed and
+     * taken off ([takeoff]). Returns what it changed, in order ("mode STABILIZE → GUIDED",
+     * "armed", "took off to 20.0 m"); empty when it was already flying.
+     */
+    public suspend fun getAirborne(height: Distance, timeout: Duration = 2.minutes): List<String> {
+        require(height.meters > 0 && height.meters <= 10_000) { "altitude must be in (0, 10000] m, was $height" }
+        return GettingAirborne(vehicle, this).takeOff(height, timeout)
+    }
+
+    /**
+     * Arms a vehicle on the ground for a flight that changes mode itself (a mission start), from
+     * whatever mode it was left in: into [mode] first, or, when null, out of a mode the autopilot
+     * will not arm in ("Arm: Mode not armable" in AUTO, RTL, LAND, BRAKE; PX4 in Land or Return)
+     * into its hold mode. Returns what it changed; empty when it was armed already.
+     */
+    public suspend fun armForFlight(mode: String? = null): List<String> =
+        if (vehicle.telemetry.armed.value) emptyList() else GettingAirborne(vehicle, this).armOnGround(mode)
+
+    /**
+     * Whether the vehicle is off the ground: its landed state, or, while that is unknown
+     * (UNDEFINED until EXTENDED_SYS_STATE is streamed), its arming state and height above home,
+     * after giving a freshly heard vehicle's reports a moment to arrive.
+     */
+    public suspend fun isFlying(): Boolean = GettingAirborne(vehicle, this).flying()
 
     /**
      * Lands: a multicopter where it is (NAV_LAND, confirmed by the LAND mode); an ArduPilot plane
@@ -232,12 +276,13 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
      */
     public suspend fun hold() {
         val hold = role(ModeRole.HOLD)
-        val here = vehicle.telemetry.position.value?.location
+        val here = vehicle.telemetry.position.value
         // PX4's Hold is also where a goto flies (DO_REPOSITION in AUTO.LOITER), and choosing the
-        // mode a vehicle is already in changes nothing: a reposition onto where it is stops it
-        // there (PX4 src/modules/navigator/loiter.cpp Loiter::on_active -> reposition()).
+        // mode a vehicle is already in changes nothing: a reposition stops it there (PX4
+        // src/modules/navigator/loiter.cpp Loiter::on_active -> reposition()). Onto where it can
+        // stop, not where it was heard: that point is behind a moving vehicle by its braking distance.
         if (hold == role(ModeRole.GUIDED) && vehicle.telemetry.mode.value?.name == hold && vehicle.telemetry.armed.value && here != null) {
-            goto(here)
+            goto(StoppingPoint.of(here))
             return
         }
         setMode(hold)
@@ -330,10 +375,14 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
         command(VehicleCommand(SET_MESSAGE_INTERVAL, param1 = messageId.toFloat(), param2 = micros))
     }
 
-    /** Waits until the vehicle reports itself on the ground and disarmed. */
+    /**
+     * Waits until the vehicle is on the ground ([isOnGround]: its landed state, or while that is
+     * unknown its height) and disarmed.
+     */
     public suspend fun awaitLanded(timeout: Duration = 5.minutes) {
-        confirm("landing", "on the ground and disarmed", combine(vehicle.telemetry.landedState, vehicle.telemetry.armed) { l, a -> l to a }, timeout) {
-            it.first == LandedState.ON_GROUND && !it.second
+        val t = vehicle.telemetry
+        confirm("landing", "on the ground and disarmed", combine(t.landedState, t.armed, t.position) { l, a, p -> Triple(l, a, p?.relativeAltitude) }, timeout, describe = { "${it.first.name.lowercase()}, ${if (it.second) "armed" else "disarmed"}" }) {
+            isOnGround(it.first, it.third) && !it.second
         }
     }
 
@@ -365,6 +414,14 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
             isAirborne(landed, position?.relativeAltitude)
         }.first { it }
     } ?: false
+
+    /**
+     * Home's altitude above sea level, waiting up to [confirmTimeout] for HOME_POSITION or a
+     * GLOBAL_POSITION_INT to tell it: a command run as soon as a vehicle is heard comes before them.
+     */
+    private suspend fun awaitHomeAltitude(): Double = homeAltitude() ?: withTimeoutOrNull(confirmTimeout) {
+        combine(vehicle.telemetry.home, vehicle.telemetry.position) { _, _ -> homeAltitude() }.first { it != null }
+    } ?: throw VehicleNotReady(vehicle.systemId, "its home altitude (no HOME_POSITION or GLOBAL_POSITION_INT heard)", confirmTimeout, "take off")
 
     private fun homeAltitude(): Double? =
         vehicle.telemetry.home.value?.altitude?.meters

@@ -17,6 +17,9 @@ public enum class MissionRunState {
     /** The vehicle flies the mission. */
     FLYING,
 
+    /** The vehicle circles the unlimited loiter that ends the mission, until the run is cancelled. */
+    LOITERING,
+
     /** The mission is complete. */
     COMPLETED,
 
@@ -75,12 +78,28 @@ public class MissionInterrupted(
     override val mission: String,
     /** The mode it switched to. */
     public val mode: String,
-    /** The step it was on, or null. */
+    /** The step it was on (an index into the mission's steps; the message counts from 1), or null. */
     public val step: Int?,
     /** The vehicle's notices, warnings and errors (STATUSTEXT) from shortly before the switch until the grace time ran out, oldest first. */
     public val said: List<String> = emptyList(),
 ) : MissionExecutionException(
-    "mission \"$mission\" interrupted: the vehicle switched to $mode" + (step?.let { " at step $it" } ?: "") +
+    "mission \"$mission\" interrupted: the vehicle switched to $mode" + (step?.let { " at step ${it + 1}" } ?: "") +
         (if (said.isEmpty()) "" else "; it said: " + said.joinToString("; ") { "\"$it\"" }),
 ),
     pod.core.platform.AutopilotTookControl
+
+/**
+ * The vehicle disarmed on the ground before the mission was complete, at [step] (an index into
+ * the mission's steps; the message counts from 1): it crashed, touched down short of its landing,
+ * or someone disarmed it. [said] is what it reported shortly before (a crash, a failsafe).
+ */
+public class MissionDisarmed(
+    override val mission: String,
+    /** The step it was on, or null. */
+    public val step: Int?,
+    /** The vehicle's notices, warnings and errors (STATUSTEXT) from shortly before it disarmed, oldest first. */
+    public val said: List<String> = emptyList(),
+) : MissionExecutionException(
+    "mission \"$mission\" ended early: the vehicle disarmed on the ground" + (step?.let { " at step ${it + 1}" } ?: "") +
+        (if (said.isEmpty()) "" else "; it said: " + said.joinToString("; ") { "\"$it\"" }),
+)

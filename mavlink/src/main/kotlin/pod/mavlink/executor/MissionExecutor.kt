@@ -30,6 +30,7 @@ import pod.core.vehicle.ConnectionState
 import pod.core.vehicle.LandedState
 import pod.core.vehicle.Severity
 import pod.core.vehicle.isAirborne
+import pod.core.vehicle.isOnGround
 import pod.core.vehicle.VehicleLost
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.plan.MissionFlavor
@@ -49,8 +50,10 @@ import pod.core.units.toReadable
  * - [MissionCompletion.LAST_STEP_DONE]: the last step is done (a plane whose mission ends with a
  *   return home: the return item is reached, since it then circles home);
  * - [MissionCompletion.LANDED]: on the ground and disarmed after the last step;
- * - [MissionCompletion.LOITERING]: the final loiter is the current item and the vehicle is there, at
- *   its height (a plane: established on its circle, see [CompletionRules]).
+ * - [MissionCompletion.LOITERING]: never. Once the final loiter is the current item and the vehicle
+ *   is there, at its height (a plane: established on its circle, see [CompletionRules]), it reports
+ *   [MissionEvent.Loitering] and keeps following the vehicle until it is cancelled (Dolphin's
+ *   "loiter indefinitely"), failing as ever if the vehicle leaves its mission or is lost.
  *
  * A vehicle already flying is not armed again, nor does its home change. Failures are typed:
  * [MissionNotFlyable] before anything is sent, the transfer and command exceptions of the
@@ -109,7 +112,8 @@ public class MissionExecutor(
         if (!airborne && !flavor.isPx4 && mission.steps.firstOrNull { it !is MissionStep.Action } !is MissionStep.TakeOff) {
             throw MissionNotFlyable(mission.name, "on ${flavor.name} a mission flown from the ground must begin with a take-off")
         }
-        val plan = MissionPlanner.plan(mission, flavor, awaitHome())
+        val heightNow = vehicle.telemetry.position.value?.relativeAltitude?.takeIf { airborne }
+        val plan = MissionPlanner.plan(mission, flavor, awaitHome(), heightNow)
         if (plan.items.size <= flavor.firstItem) throw MissionNotFlyable(mission.name, "it has no step ${flavor.name} flies as a mission item")
         _plan.value = plan
         val emit: suspend (MissionEvent) -> Unit = { event ->
@@ -137,10 +141,7 @@ public class MissionExecutor(
                     Input.Vehicle(p, l, a, m?.name, c)
                 }.collect { inbox.send(it) }
             }
-            if (!airborne) {
-                MissionReplacement.armingMode(identity, flavor, vehicle.telemetry.mode.value?.name)?.let { vehicle.action.setMode(it) }
-                vehicle.action.arm()
-            }
+            if (!airborne) vehicle.action.armForFlight(MissionReplacement.armingMode(identity, flavor, vehicle.telemetry.mode.value?.name))
             vehicle.action.startMission()
             emit(MissionEvent.Started)
             _state.value = MissionRunState.FLYING
@@ -190,9 +191,11 @@ public class MissionExecutor(
             _progress.value = MissionProgress(tracker.currentStep, tracker.next, plan.stepCount, tracker.currentItem.takeIf { it >= 0 })
         }
 
+        var loitering = false
+
         fun complete(v: Input.Vehicle?): Boolean = when (rule) {
             MissionCompletion.LAST_STEP_DONE -> tracker.allDone
-            MissionCompletion.LANDED -> v != null && v.landed == LandedState.ON_GROUND && !v.armed &&
+            MissionCompletion.LANDED -> v != null && isOnGround(v.landed, v.position?.relativeAltitude) && !v.armed &&
                 (tracker.allDone || (airborneSeen && tracker.currentItem >= tracker.lastStepStart))
             MissionCompletion.LOITERING -> finalLoiter != null && v?.position != null && tracker.next >= plan.stepCount - 1 &&
                 tracker.currentItem >= tracker.lastStepStart &&
@@ -220,9 +223,21 @@ public class MissionExecutor(
                     if (isAirborne(input.landed, input.position?.relativeAltitude, input.armed)) airborneSeen = true
                 }
             }
-            if (complete(seen)) {
+            if (rule == MissionCompletion.LOITERING) {
+                if (!loitering && complete(seen)) {
+                    loitering = true
+                    _state.value = MissionRunState.LOITERING
+                    emit(MissionEvent.Loitering(mission.steps.size - 1))
+                }
+            } else if (complete(seen)) {
                 carryOut(tracker.finish())
                 return
+            }
+            seen?.let { v ->
+                // Down and disarmed short of completion: a crash, a landing short, someone's disarm.
+                if (airborneSeen && !v.armed && !isAirborne(v.landed, v.position?.relativeAltitude, false)) {
+                    throw MissionDisarmed(mission.name, tracker.currentStep, heard.filter { it.at.elapsedNow() <= TEXTS_BEFORE_SWITCH }.map { it.text })
+                }
             }
             val outOfMission = seen?.mode != null && seen?.mode != missionMode && !tracker.allDone
             leftMission = if (outOfMission) leftMission ?: vehicle.clock.markNow() else null

@@ -11,8 +11,11 @@ import pod.core.mission.PrecisionLand
 import pod.core.mission.SpeedKind
 import pod.mavlink.command.SpeedTypes
 import pod.mavlink.MavFrames
+import pod.core.units.Distance
 import pod.core.units.Location
+import pod.core.vehicle.CLEAR_OF_GROUND
 import pod.mavlink.command.MavCommands
+import pod.mavlink.executor.MissionNotFlyable
 import pod.mavlink.command.VehicleCommand
 import pod.mavlink.mission.MissionItem
 
@@ -33,6 +36,12 @@ import pod.mavlink.mission.MissionItem
  *   descent rate is sent as a command when the vehicle reaches the next item.
  * - The vehicle keeps its own home: heights are relative to it, and a mission's `home` is only where
  *   its relative moves were planned from (its altitude may be unknown), so no DO_SET_HOME is sent.
+ * - No waypoint or loiter is ever sent at 0 m. A step lower than [CLEAR_OF_GROUND] above home (the
+ *   builder's "at the current height" for a mission planned from the ground at home, such as
+ *   `home(h); returnHomeAndLand()`) is sent at the height the vehicle flies at before it: the
+ *   previous step's, or the vehicle's own at upload. The autopilots disagree on a zero altitude
+ *   (ArduCopter flies it at its current altitude, ArduPlane only without a position, PX4 at ground
+ *   level: see the simulator's ItemAltitude), so Pod never leaves it to them.
  */
 public object MissionPlanner {
     /** MAV_FRAME_GLOBAL (altitude above mean sea level). */
@@ -49,16 +58,22 @@ public object MissionPlanner {
 
     /**
      * The plan for [mission] on [flavor]; [home], the vehicle's own (altitude above sea level),
-     * fills ArduPilot's item 0. Throws IllegalArgumentException for an empty mission.
+     * fills ArduPilot's item 0. [heightNow] is the vehicle's height above home when it is flying
+     * (null on the ground): what a step "at the current height" before any other height means.
+     * Throws IllegalArgumentException for an empty mission and [MissionNotFlyable] for a step
+     * that would fly at ground level (it has no height and nothing before it flies).
      */
-    public fun plan(mission: Mission, flavor: MissionFlavor, home: Location): MissionPlan {
+    public fun plan(mission: Mission, flavor: MissionFlavor, home: Location, heightNow: Distance? = null): MissionPlan {
         require(mission.steps.isNotEmpty()) { "mission \"${mission.name}\" has no steps" }
         val launch = home
         val out = Builder(flavor)
         if (flavor.homeAtZero) out.add(null, MissionItem(0, FRAME_GLOBAL, MavCommands.NAV_WAYPOINT, x = launch.latE7, y = launch.lonE7, z = launch.altitude.meters.toFloat()))
-        var last = launch.copy(altitude = pod.core.units.Distance.ZERO)
+        var last = launch.copy(altitude = Distance.ZERO)
         var lastCourse: Double? = null
-        mission.steps.forEachIndexed { index, step ->
+        // The height the vehicle flies at before the step being planned, or null on the ground.
+        var flying: Distance? = heightNow?.takeIf { it >= CLEAR_OF_GROUND }
+        mission.steps.forEachIndexed { index, original ->
+            val step = withHeight(mission, index, original, flying)
             when (step) {
                 is MissionStep.TakeOff -> out.add(index, positioned(MavCommands.NAV_TAKEOFF, step.location, p1 = if (flavor.fixedWing) step.pitch.degrees.toFloat() else 0f, p4 = yawUnchanged(flavor)))
                 is MissionStep.Waypoint -> out.add(index, positioned(MavCommands.NAV_WAYPOINT, step.location, p1 = step.hold.toDouble(DurationUnit.SECONDS).toFloat(), p4 = yawUnchanged(flavor)))
@@ -70,7 +85,7 @@ public object MissionPlanner {
                         val approach = LandingApproach.point(step.location, last, step.yaw, lastCourse)
                         out.add(index, positioned(MavCommands.NAV_WAYPOINT, approach, p4 = yawUnchanged(flavor)))
                     }
-                    out.add(index, positioned(MavCommands.NAV_LAND, step.location.copy(altitude = pod.core.units.Distance.ZERO), p2 = precision(step.precision).toFloat(), p4 = step.yaw?.degrees?.toFloat() ?: Float.NaN))
+                    out.add(index, positioned(MavCommands.NAV_LAND, step.location.copy(altitude = Distance.ZERO), p2 = precision(step.precision).toFloat(), p4 = step.yaw?.degrees?.toFloat() ?: Float.NaN))
                 }
                 MissionStep.ReturnHome -> out.add(index, unpositioned(MavCommands.NAV_RETURN_TO_LAUNCH))
                 is MissionStep.ChangeSpeed -> {
@@ -97,11 +112,40 @@ public object MissionPlanner {
             when (step) {
                 is MissionStep.Navigation -> last = step.location
                 is MissionStep.ChangeAltitude -> last = last.copy(altitude = step.height)
-                MissionStep.ReturnHome -> last = launch.copy(altitude = pod.core.units.Distance.ZERO)
+                MissionStep.ReturnHome -> last = launch.copy(altitude = Distance.ZERO)
                 else -> Unit
             }
+            flying = when (step) {
+                is MissionStep.Land, MissionStep.ReturnHome -> null
+                is MissionStep.Navigation -> step.location.altitude
+                is MissionStep.ChangeAltitude -> step.height
+                else -> flying
+            }?.takeIf { it >= CLEAR_OF_GROUND }
         }
         return out.build(mission.steps.size, emptyList())
+    }
+
+    /**
+     * [step] with the height it is flown at: a waypoint or loiter lower than [CLEAR_OF_GROUND]
+     * takes [flying], the height before it; without one, the mission cannot be flown as written.
+     */
+    private fun withHeight(mission: Mission, index: Int, step: MissionStep, flying: Distance?): MissionStep {
+        val at = when (step) {
+            is MissionStep.Waypoint -> step.location
+            is MissionStep.Loiter -> step.location
+            else -> return step
+        }
+        if (at.altitude >= CLEAR_OF_GROUND) return step
+        val height = flying ?: throw MissionNotFlyable(
+            mission.name,
+            "step ${index + 1} (${if (step is MissionStep.Loiter) "a loiter" else "a waypoint"}) is ${at.altitude} above home, " +
+                "and the vehicle does not fly before it: take off first or give the step a height",
+        )
+        return when (step) {
+            is MissionStep.Waypoint -> step.copy(location = at.copy(altitude = height))
+            is MissionStep.Loiter -> step.copy(location = at.copy(altitude = height))
+            else -> step
+        }
     }
 
     private fun loiter(step: MissionStep.Loiter, flavor: MissionFlavor): MissionItem {

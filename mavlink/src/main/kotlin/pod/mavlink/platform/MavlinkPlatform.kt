@@ -14,7 +14,6 @@ import pod.core.platform.MissionEvent
 import pod.core.platform.Platform
 import pod.core.platform.PlatformVehicle
 import pod.core.platform.SafeState
-import pod.core.vehicle.LandedState
 import pod.mavlink.GroundStation
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.executor.ExecutorTiming
@@ -93,12 +92,14 @@ public class MavlinkPlatform(
     /**
      * Holds ([SafeState.HOLD]: [VehicleActions.hold][pod.mavlink.action.VehicleActions.hold], a
      * mode that keeps altitude with nobody on the sticks) or returns to launch
-     * ([SafeState.RETURN_HOME]) and returns once the vehicle's mode confirms it. A vehicle on the
-     * ground and disarmed is safe as it is.
+     * ([SafeState.RETURN_HOME]) and returns once the vehicle's mode confirms it. A disarmed vehicle
+     * is left in its mode, whatever its landed state says (UNDEFINED until EXTENDED_SYS_STATE is
+     * streamed): no mode holds a vehicle whose motors are off, and the hold mode would stop the next
+     * flight (ArduCopter will not arm in BRAKE: "Arm: Mode not armable").
      */
     override suspend fun makeSafe(vehicle: PlatformVehicle, state: SafeState) {
         val v = mavlink(vehicle)
-        if (!v.telemetry.armed.value && v.telemetry.landedState.value == LandedState.ON_GROUND) return
+        if (!v.telemetry.armed.value) return
         when (state) {
             SafeState.HOLD -> v.action.hold()
             SafeState.RETURN_HOME -> v.action.returnToLaunch()

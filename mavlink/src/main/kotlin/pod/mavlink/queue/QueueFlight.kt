@@ -2,6 +2,9 @@ package pod.mavlink.queue
 
 import kotlinx.coroutines.awaitCancellation
 import kotlinx.coroutines.coroutineScope
+import pod.mavlink.telemetry.ModeRole
+import pod.mavlink.telemetry.FlightModes
+import kotlinx.coroutines.cancelChildren
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.collectLatest
 import kotlinx.coroutines.flow.combine
@@ -51,6 +54,7 @@ public class QueueFlight(
     private val config: QueueFlightConfig = QueueFlightConfig(),
 ) {
     private val steering = GuidedSteering(vehicle, config.circleSpeed)
+    private val takeover = TakeoverWatch(vehicle, emptySet())
 
     /** The point a multirotor's last element ended on by arriving, or null: where an empty queue holds it. */
     @Volatile
@@ -60,16 +64,18 @@ public class QueueFlight(
     public suspend fun fly(whenEmpty: WhenEmpty = WhenEmpty.COMPLETE) {
         val release = queue.claim(vehicle.toString())
         try {
-            if (!airborne()) throw QueueNotFlyable(vehicle.systemId, "it is not flying (take off first)")
+            if (!vehicle.action.isFlying()) throw QueueNotFlyable(vehicle.systemId, "it is not flying (take off first)")
             val home = awaitHome()
             val arrival = arrivalRadius()
+            takeover.allowed = steeredModes()
             coroutineScope {
                 val clock = launch { keepTime() }
+                launch { takeover.watch() }
                 queue.state.map { it.current }.distinctUntilChanged()
                     .dropWhile { it == null }
                     .transformWhile { emit(it); it != null || whenEmpty == WhenEmpty.WAIT }
                     .collectLatest { entry -> if (entry == null) holdHere() else fly(entry, home, arrival) }
-                clock.cancel()
+                coroutineContext.cancelChildren()
             }
         } finally {
             release()
@@ -105,14 +111,17 @@ public class QueueFlight(
                 awaitCancellation()
             }
             QueuePattern.Hold -> {
-                val here = vehicle.telemetry.position.value?.location ?: home
+                // Where it can stop: a moving multirotor held where it was heard brakes past that point and flies back.
+                val here = vehicle.telemetry.position.value?.let { if (steering.isPlane) it.location else pod.mavlink.action.StoppingPoint.of(it) } ?: home
                 steadily(absolute(here.copy(altitude = height), home)) { awaitCancellation() }
             }
             QueuePattern.Land -> {
+                takeover.allowed += modeFor(ModeRole.LAND) + modeFor(ModeRole.MISSION) // an ArduPlane lands through its mission's sequence
                 accepted { vehicle.action.land() }
                 vehicle.action.awaitLanded(config.landingTimeout)
             }
             QueuePattern.ReturnHome -> {
+                takeover.allowed += modeFor(ModeRole.RETURN)
                 accepted { vehicle.action.returnToLaunch() }
                 if (steering.isPlane) awaitNear(home, arrival, ignoreAltitude = true) else vehicle.action.awaitLanded(config.landingTimeout)
             }
@@ -198,13 +207,24 @@ public class QueueFlight(
     /**
      * Holds a multirotor on the point it has just reached (an arrival counts a couple of metres
      * out, and the position heard is a round trip old: holding "here" would stop it short of the
-     * point, up to 1.9 m at 100 ms RTT in the issue-15 waypoint benchmark), or where it is after
-     * anything else (a circle, a hold, a skipped element).
+     * point, up to 1.9 m at 100 ms RTT in the issue-15 waypoint benchmark), or where it can stop
+     * after anything else (a circle, a hold, a skipped element); a plane circles where it is.
      */
     private suspend fun holdHere() {
         if (!airborne()) return
-        val target = reached ?: vehicle.telemetry.position.value?.location ?: return
-        accepted { steering.goTo(target) }
+        reached?.let { point ->
+            accepted { steering.goTo(point) }
+            return
+        }
+        // Still moving (a skipped element, a cancelled circle): a multirotor stops where its
+        // braking takes it, by its autopilot's hold (BRAKE, PX4's Hold); a goto to where it was
+        // heard would brake past that point and fly back (25 m at 10 m/s on ArduCopter).
+        if (!steering.isPlane) {
+            accepted { vehicle.action.hold() }
+            return
+        }
+        val here = vehicle.telemetry.position.value?.location ?: return
+        accepted { steering.goTo(here) }
     }
 
     /** Runs [command] until the vehicle answers it: a command lost [CommandTimeout] is sent again; a refusal ends the flight. */
@@ -233,7 +253,21 @@ public class QueueFlight(
     /** Waits [vehicleTime] of the vehicle's time (a simulator may run faster than the clock: the queue's time scale). */
     private suspend fun pause(vehicleTime: Duration) = delay(vehicleTime / queue.timeScale)
 
+    /**
+     * The modes Pod flies a queue in: the guided mode, its hold (BRAKE, Hold, a plane's LOITER),
+     * PX4's orbit for a multicopter's circle ([GuidedSteering]); a landing or return adds its own.
+     */
+    private fun steeredModes(): Set<String> =
+        setOf(modeFor(ModeRole.GUIDED), modeFor(ModeRole.HOLD)).flatten().toSet() + if (steering.circlesFromGround) emptySet() else setOf(PX4_ORBIT)
+
+    private fun modeFor(role: ModeRole): List<String> = vehicle.identity.value.let { listOfNotNull(FlightModes.forRole(it.autopilot, it.type, role)) }
+
     private fun airborne(): Boolean = vehicle.telemetry.let { isAirborne(it.landedState.value, it.position.value?.relativeAltitude, it.armed.value) }
+
+    private companion object {
+        /** PX4's orbit mode, which a multicopter's DO_ORBIT switches to ([GuidedSteering.circle]). */
+        const val PX4_ORBIT = "POSCTL.ORBIT"
+    }
 
     private fun currentHeight(): Distance = vehicle.telemetry.position.value?.relativeAltitude ?: config.defaultHeight
 

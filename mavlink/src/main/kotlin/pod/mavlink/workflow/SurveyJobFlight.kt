@@ -3,7 +3,6 @@ package pod.mavlink.workflow
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.launch
 import pod.core.units.Distance
-import pod.core.vehicle.LandedState
 import pod.core.workflow.ControlReport
 import pod.core.workflow.SurveyAborted
 import pod.core.workflow.SurveyJob
@@ -38,9 +37,7 @@ internal suspend fun <F, B> flySurveyJob(vehicle: MavlinkVehicle, job: SurveyJob
     (operation.latest.value as? ControlReport.Stopped)?.let { throw SurveyAborted(it.reason) }
 }
 
-/** Arms and takes off to [height] above home when [vehicle] is on the ground; nothing when it flies. */
+/** Arms and takes off to [height] above home when [vehicle] is on the ground; nothing when it flies ([pod.mavlink.action.VehicleActions.getAirborne]). */
 internal suspend fun takeOffIfOnGround(vehicle: MavlinkVehicle, height: Distance) {
-    if (vehicle.telemetry.landedState.value != LandedState.ON_GROUND) return
-    vehicle.action.arm()
-    vehicle.action.takeoff(height)
+    vehicle.action.getAirborne(height)
 }

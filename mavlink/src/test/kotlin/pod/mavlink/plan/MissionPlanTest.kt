@@ -26,7 +26,7 @@ import pod.mavlink.command.MavCommands
 
 /** Locations as the wire carries them: degrees × 10⁷, heights a float holds exactly. */
 private val locations = arbitrary {
-    Location(Arb.int(411_000_000..412_000_000).bind() / 1e7, Arb.int(-86_500_000..-85_500_000).bind() / 1e7, (Arb.int(0..800).bind() * 0.5).m)
+    Location(Arb.int(411_000_000..412_000_000).bind() / 1e7, Arb.int(-86_500_000..-85_500_000).bind() / 1e7, (Arb.int(2..800).bind() * 0.5).m) // at least 1 m: lower is "the current height" (MissionPlanner)
 }
 
 /** Steps that [flavor] takes as mission items and reads back unchanged. */
