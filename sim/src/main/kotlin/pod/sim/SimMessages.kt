@@ -117,18 +117,31 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
     private var textId = 0
 
     /**
-     * STATUSTEXT for [text]: one message when it fits the 50-character field (id 0), else chunks
-     * of 50 with one new non-zero id and chunk_seq 0, 1, …, the last one shorter (empty when the
-     * text fills its chunks exactly), as ArduPilot's GCS::send_textv
-     * (libraries/GCS_MAVLink/GCS_Common.cpp) sends them. PX4 sends the same way.
+     * STATUSTEXT for [text], cut into 50-character chunks as the autopilot cuts them.
+     *
+     * ArduPilot (GCS::send_textv, libraries/GCS_MAVLink/GCS_Common.cpp): one message with id 0 when
+     * the text fits, else chunks with one new non-zero id and chunk_seq 0, 1, …, the last one
+     * shorter (empty when the text fills its chunks exactly).
+     *
+     * PX4 (MavlinkStreamStatustext::send, src/modules/mavlink/streams/STATUSTEXT.hpp): every text
+     * takes the next value of a uint16 counter that starts at 0 (`msg.id = _id++`), short ones too,
+     * so its first text, chunked or not, has id 0; the chunks stop with the one that holds the end,
+     * so a text that fills its chunks exactly has no empty chunk after it.
      */
     fun statusTexts(severity: Severity, text: String): List<Statustext> {
         // MAV_SEVERITY numbers are the core enum's order, EMERGENCY 0 to DEBUG 7.
         val level = EnumValue.create<MavSeverity>(severity.ordinal)
+        fun chunk(text: String, id: Int, seq: Int) = Statustext.builder().severity(level).text(text).id(id).chunkSeq(seq).build()
+        if (config.autopilot == Autopilot.PX4) {
+            val id = textId
+            textId = (textId + 1) and 0xFFFF
+            val count = maxOf(1, (text.length + TEXT_FIELD - 1) / TEXT_FIELD)
+            return (0 until count).map { i -> chunk(text.substring(i * TEXT_FIELD, minOf((i + 1) * TEXT_FIELD, text.length)), id, i) }
+        }
         if (text.length <= TEXT_FIELD) return listOf(Statustext.builder().severity(level).text(text).build())
         textId = if (textId >= 0xFFFF) 1 else textId + 1
         val chunks = (0..text.length / TEXT_FIELD).map { i -> text.substring(minOf(i * TEXT_FIELD, text.length), minOf((i + 1) * TEXT_FIELD, text.length)) }
-        return chunks.mapIndexed { i, chunk -> Statustext.builder().severity(level).text(chunk).id(textId).chunkSeq(i).build() }
+        return chunks.mapIndexed { i, part -> chunk(part, textId, i) }
     }
 
     /** The messages for one of the autopilot's [SimOutput]s (several for a long text). */
