@@ -50,13 +50,21 @@ internal abstract class MissionAction(out: Output, name: String) : VehicleComman
     /**
      * Collects [transfer] to its end, reporting its progress: a [TransferProgressView] for people (a
      * bar at a terminal, a few lines elsewhere, once the total is known), a JSON line per item for
-     * scripts. Returns the last progress (a download's carries the list).
+     * scripts; a transfer that waits before it starts says why, as vehicle [sysid]'s. Returns the last
+     * progress (a download's carries the list).
      */
-    protected suspend fun withProgress(action: String, transfer: Flow<TransferProgress>): TransferProgress? {
+    protected suspend fun withProgress(sysid: Int, action: String, transfer: Flow<TransferProgress>): TransferProgress? {
         var last: TransferProgress? = null
+        // A transfer that must wait before it starts says why (a vehicle still holding an abandoned upload).
+        fun waiting(p: TransferProgress): Boolean {
+            val reason = p.waiting ?: return false
+            if (json) emit(Event.Waiting(sysid, reason)) else out.line("vehicle $sysid: waiting: $reason")
+            return true
+        }
         if (json) {
             var shown = -1
             transfer.collect { p ->
+                if (waiting(p)) return@collect
                 last = p
                 if (p.done != shown) {
                     shown = p.done
@@ -70,6 +78,7 @@ internal abstract class MissionAction(out: Output, name: String) : VehicleComman
             val ticker = if (view.animated) launch { while (true) { delay(TransferProgressView.TICK); view.tick() } } else null
             try {
                 transfer.collect {
+                    if (waiting(it)) return@collect
                     last = it
                     view.update(it)
                 }
@@ -119,7 +128,7 @@ internal class MissionUpload(out: Output) : MissionAction(out, "upload") {
 
     override suspend fun act(vehicle: MavlinkVehicle) {
         plan?.let { lists = PlanOnVehicle.lists(it, vehicle.identity.value.autopilot) }
-        lists.forEach { (type, items) -> withProgress("uploading", vehicle.mission.uploading(items, type)) }
+        lists.forEach { (type, items) -> withProgress(vehicle.systemId, "uploading", vehicle.mission.uploading(items, type)) }
         val total = lists.sumOf { it.second.size }
         val message = if (lists.size == 1) {
             val (type, items) = lists.single()
@@ -145,7 +154,7 @@ internal class MissionDownload(out: Output) : MissionAction(out, "download") {
 
     override suspend fun act(vehicle: MavlinkVehicle) {
         if (LocalFiles.isPlan(file)) return downloadPlan(vehicle)
-        val items = withProgress("downloading", vehicle.mission.downloading(type))?.items.orEmpty()
+        val items = withProgress(vehicle.systemId, "downloading", vehicle.mission.downloading(type))?.items.orEmpty()
         try {
             WplFile.write(Path.of(file), items)
         } catch (e: IOException) {
@@ -157,7 +166,7 @@ internal class MissionDownload(out: Output) : MissionAction(out, "download") {
     // All three lists into one .plan file; ArduPilot's mission item 0 is its home, the file's planned home.
     private suspend fun downloadPlan(vehicle: MavlinkVehicle) {
         val lists = listOf(MissionType.MISSION, MissionType.FENCE, MissionType.RALLY).associateWith { type ->
-            withProgress("downloading", vehicle.mission.downloading(type))?.items.orEmpty()
+            withProgress(vehicle.systemId, "downloading", vehicle.mission.downloading(type))?.items.orEmpty()
         }
         val plan = try {
             PlanOnVehicle.plan(lists.getValue(MissionType.MISSION), lists.getValue(MissionType.FENCE), lists.getValue(MissionType.RALLY), vehicle.identity.value.autopilot)
