@@ -25,6 +25,7 @@ import pod.mavlink.plan.PlanListException
 import pod.mavlink.plan.PlanOnVehicle
 import pod.mavlink.plan.QgcPlan
 import pod.mavlink.plan.QgcPlanFile
+import pod.mavlink.plan.WplOnVehicle
 import java.io.IOException
 import java.nio.file.Path
 
@@ -127,7 +128,9 @@ internal class MissionUpload(out: Output) : MissionAction(out, "upload") {
     }
 
     override suspend fun act(vehicle: MavlinkVehicle) {
-        plan?.let { lists = PlanOnVehicle.lists(it, vehicle.identity.value.autopilot) }
+        val autopilot = vehicle.identity.value.autopilot
+        // A .plan has no home item and a WPL file's mission has one in line 0: each as this autopilot keeps home.
+        lists = plan?.let { PlanOnVehicle.lists(it, autopilot) } ?: lists.map { (type, items) -> type to WplOnVehicle.toVehicle(items, type, autopilot) }
         lists.forEach { (type, items) -> withProgress(vehicle.systemId, "uploading", vehicle.mission.uploading(items, type)) }
         val total = lists.sumOf { it.second.size }
         val message = if (lists.size == 1) {
@@ -156,7 +159,7 @@ internal class MissionDownload(out: Output) : MissionAction(out, "download") {
         if (LocalFiles.isPlan(file)) return downloadPlan(vehicle)
         val items = withProgress(vehicle.systemId, "downloading", vehicle.mission.downloading(type))?.items.orEmpty()
         try {
-            WplFile.write(Path.of(file), items)
+            WplFile.write(Path.of(file), WplOnVehicle.toFile(items, type, vehicle.identity.value.autopilot, vehicle.telemetry.home.value))
         } catch (e: IOException) {
             fail("cannot write $file: ${e.message}")
         }
