@@ -11,7 +11,12 @@ import com.github.ajalt.clikt.parameters.types.choice
 import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.delay
+import kotlinx.coroutines.flow.filterNotNull
+import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
+import kotlinx.coroutines.withTimeoutOrNull
+import pod.core.units.Location
+import kotlin.time.Duration.Companion.seconds
 import pod.cli.json.Event
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.mission.InvalidMission
@@ -159,11 +164,17 @@ internal class MissionDownload(out: Output) : MissionAction(out, "download") {
         if (LocalFiles.isPlan(file)) return downloadPlan(vehicle)
         val items = withProgress(vehicle.systemId, "downloading", vehicle.mission.downloading(type))?.items.orEmpty()
         try {
-            WplFile.write(Path.of(file), WplOnVehicle.toFile(items, type, vehicle.identity.value.autopilot, vehicle.telemetry.home.value))
+            WplFile.write(Path.of(file), WplOnVehicle.toFile(items, type, vehicle.identity.value.autopilot, homeFor(vehicle, items)))
         } catch (e: IOException) {
             fail("cannot write $file: ${e.message}")
         }
         finish("downloaded ${items(items.size, type)} from vehicle ${vehicle.systemId} to $file", vehicle, action = "download", items = items.size)
+    }
+
+    // Line 0 of a PX4 mission file is the vehicle's home, which it reports once its estimator has an origin.
+    private suspend fun homeFor(vehicle: MavlinkVehicle, items: List<MissionItem>): Location? {
+        if (items.isEmpty() || type != MissionType.MISSION || vehicle.identity.value.autopilot == Autopilot.ARDUPILOT) return null
+        return withTimeoutOrNull(HOME_WAIT) { vehicle.telemetry.home.filterNotNull().first() }
     }
 
     // All three lists into one .plan file; ArduPilot's mission item 0 is its home, the file's planned home.
@@ -185,6 +196,9 @@ internal class MissionDownload(out: Output) : MissionAction(out, "download") {
         finish("downloaded $summary from vehicle ${vehicle.systemId} to $file", vehicle, action = "download", items = lists.values.sumOf { it.size })
     }
 }
+
+/** How long `pod mission download FILE` waits for a PX4 vehicle's home to write as line 0 (then 0, 0, 0). */
+private val HOME_WAIT = 5.seconds
 
 /** `pod mission clear`. */
 internal class MissionClear(out: Output) : MissionAction(out, "clear") {
