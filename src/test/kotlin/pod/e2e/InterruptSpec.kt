@@ -108,7 +108,7 @@ class InterruptSpec : StringSpec({
                 val sim = SimVehicle(SimVehicleConfig(systemId = 74, autopilot = Autopilot.PX4, gcs = "udpout://127.0.0.1:${relay.portA}"))
                 try {
                     sim.start(this)
-                    WplFile.write(file, waypoints(500))
+                    WplFile.write(file, waypoints(501)) // line 0 is home, which PX4 does not get: 500 items go
                     val pod = pod("mission", "upload", file.toString(), "--connect", "udpin:127.0.0.1:$port", "--sysid", "74")
                     pod.awaitOut(60.seconds) { "uploading" in it && "/500" in it && "500/500" !in it }
                     pod.signal("INT")

@@ -15,6 +15,7 @@ import kotlinx.coroutines.withContext
 import pod.cli.Pod
 import pod.cli.json.Event
 import pod.core.vehicle.Autopilot
+import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionType
 import pod.mavlink.mission.WplFile
 import pod.sim.SimVehicle
@@ -27,6 +28,13 @@ import kotlin.io.path.writeText
 /** A UDP port free right now on 127.0.0.1 (the CLI binds it a moment later). */
 internal fun freePort(): Int = DatagramSocket(0, InetAddress.getByName("127.0.0.1")).use { it.localPort }
 
+/** A WPL mission file of [items]: line 0 the simulated vehicle's home, as the format has it, then [items] from line 1. */
+private fun withHome(items: List<MissionItem>): List<MissionItem> {
+    val home = SimVehicleConfig.DEFAULT_HOME
+    val line0 = MissionItem(seq = 0, frame = 0, command = 16, current = true, x = Math.round(home.latitude * 1e7).toInt(), y = Math.round(home.longitude * 1e7).toInt(), z = home.altitude.meters.toFloat())
+    return listOf(line0) + items.map { it.copy(seq = it.seq + 1) }
+}
+
 class MissionCliSpec : StringSpec({
 
     "pod mission upload, download and clear a simulated vehicle's list through WPL files" {
@@ -36,8 +44,9 @@ class MissionCliSpec : StringSpec({
             val dir = Files.createTempDirectory("pod-mission-cli")
             try {
                 sim.start(this)
-                val items = waypoints(25)
-                val upload = dir.resolve("plan.waypoints").also { WplFile.write(it, items) }
+                val items = waypoints(25).map { it.copy(current = false) }
+                val file = withHome(items) // line 0 is home, which PX4 does not get (WplOnVehicle)
+                val upload = dir.resolve("plan.waypoints").also { WplFile.write(it, file) }
                 val connect = listOf("--connect", "udpin:127.0.0.1:$port", "--json")
                 val out = Captured()
                 withContext(Dispatchers.IO) { Pod(out).parse(listOf("mission", "upload", upload.toString()) + connect) }
@@ -46,12 +55,12 @@ class MissionCliSpec : StringSpec({
                 (done.action to done.items) shouldBe ("upload" to 25)
                 done.sysid shouldBe 12
                 uploaded.filterIsInstance<Event.Progress>().last() shouldBe Event.Progress("uploading", 25, 25)
-                sim.missionServer.list(MissionType.MISSION) shouldBe items.map { it.copy(current = false) }
+                sim.missionServer.list(MissionType.MISSION) shouldBe items
 
                 val download = dir.resolve("back.waypoints")
                 val downloaded = Captured()
                 withContext(Dispatchers.IO) { Pod(downloaded).parse(listOf("mission", "download", download.toString()) + connect) }
-                WplFile.read(download) shouldBe items
+                WplFile.read(download) shouldBe file // line 0 written back from the vehicle's home
                 downloaded.events.last().shouldBeInstanceOf<Event.Done>().items shouldBe 25
                 downloaded.events.filterIsInstance<Event.Progress>().last() shouldBe Event.Progress("downloading", 25, 25)
 
@@ -88,7 +97,7 @@ class MissionCliSpec : StringSpec({
             val dir = Files.createTempDirectory("pod-mission-progress")
             try {
                 sim.start(this)
-                val upload = dir.resolve("plan.waypoints").also { WplFile.write(it, waypoints(25)) }
+                val upload = dir.resolve("plan.waypoints").also { WplFile.write(it, withHome(waypoints(25).map { w -> w.copy(current = false) })) }
                 val connect = listOf("--connect", "udpin:127.0.0.1:$port")
                 val up = Lines()
                 withContext(Dispatchers.IO) { Pod(up).parse(listOf("mission", "upload", upload.toString()) + connect) }

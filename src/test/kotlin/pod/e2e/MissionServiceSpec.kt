@@ -2,7 +2,10 @@ package pod.e2e
 
 import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.comparables.shouldBeGreaterThan
 import io.kotest.matchers.comparables.shouldBeLessThan
+import io.dronefleet.mavlink.common.MissionCount
+import kotlinx.coroutines.flow.toList
 import io.kotest.matchers.shouldBe
 import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.coroutineScope
@@ -55,7 +58,31 @@ class MissionServiceSpec : StringSpec({
         // 8 s upload timeout: Pod waits for it instead of failing.
         withSim(SimVehicleConfig(systemId = 32, autopilot = Autopilot.ARDUPILOT)) { vehicle, sim ->
             cancelUploadMidway(vehicle, 500)
-            vehicle.mission.download() shouldBe sim.missionServer.list(MissionType.MISSION)
+            // What it holds is half-written (ArduPilot stores each item as it arrives); the download shows it all.
+            vehicle.mission.download().map { it.copy(current = false) } shouldBe sim.missionServer.list(MissionType.MISSION)
+        }
+    }
+
+    "a download while an ArduPilot vehicle holds an upload another process abandoned waits, says why, and succeeds" {
+        // What an interrupted `pod mission upload` leaves for the next `pod mission download`: a
+        // MISSION_COUNT whose items never come (sent raw, so this process's service knows nothing
+        // of it). ArduPilot answers DENIED until its 8 s upload timeout (MissionItemProtocol).
+        withSim(SimVehicleConfig(systemId = 35, autopilot = Autopilot.ARDUPILOT)) { vehicle, sim ->
+            vehicle.send(MissionCount.builder().targetSystem(35).targetComponent(1).count(20).build())
+            val mark = timebase.clock.markNow()
+            val progress = vehicle.mission.downloading().toList()
+            progress.mapNotNull { it.waiting } shouldBe listOf("the vehicle is still holding an unfinished upload") // said once
+            progress.last().items shouldBe sim.missionServer.list(MissionType.MISSION)
+            mark.elapsedNow() shouldBeGreaterThan 5.seconds // it did wait for the vehicle to let go
+        }
+    }
+
+    "a refusal that outlasts the wait says what the vehicle is holding" {
+        withSim(SimVehicleConfig(systemId = 36, autopilot = Autopilot.ARDUPILOT)) { vehicle, _ ->
+            vehicle.mission.timing = TransferTiming(deniedRetry = 2.seconds)
+            vehicle.send(MissionCount.builder().targetSystem(36).targetComponent(1).count(20).build())
+            shouldThrow<MissionRejected> { vehicle.mission.download() }.message shouldBe
+                "download of mission rejected by the vehicle: DENIED: the vehicle is still holding an unfinished upload (refused for 2.0 s)"
         }
     }
 

@@ -12,6 +12,9 @@ import pod.mavlink.MavlinkVehicle
 import pod.mavlink.mission.InvalidMission
 import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionRejected
+import pod.mavlink.action.VehicleDisarmed
+import pod.mavlink.mission.ArduPilotMissionStorage
+import pod.mavlink.mission.MissionHalfWritten
 import pod.mavlink.mission.MissionResult
 import pod.mavlink.mission.MissionType
 import pod.sim.SimVehicle
@@ -103,7 +106,7 @@ class MissionTransferSpec : StringSpec({
         }
     }
 
-    "an item the vehicle refuses fails the upload with its result, and the old mission stays whole" {
+    "an item the vehicle refuses fails the upload with its result; ArduPilot keeps the items stored before it, and Pod will not start or resume that half-written mission" {
         withVehicle(Autopilot.ARDUPILOT) { vehicle, sim ->
             vehicle.mission.upload(waypoints(6))
             val before = sim.missionServer.list(MissionType.MISSION)
@@ -112,7 +115,17 @@ class MissionTransferSpec : StringSpec({
             val error = shouldThrow<MissionRejected> { vehicle.mission.upload(bad) }
             error.result shouldBe MissionResult.INVALID_PARAM1
             error.seq shouldBe 4
-            sim.missionServer.list(MissionType.MISSION) shouldBe before
+            // ArduPilot stored items 0..3 as they came (item 0 is home): new up to the refused one, old after it.
+            val held = sim.missionServer.list(MissionType.MISSION)
+            held.drop(1).take(3) shouldBe ArduPilotMissionStorage.stored(bad.subList(1, 4), fixedWing = false)
+            held.drop(4) shouldBe before.drop(4)
+
+            shouldThrow<MissionHalfWritten> { vehicle.action.startMission() }.message shouldBe
+                "cannot start the mission: the last upload of the mission list did not complete, so the vehicle may hold it half-written " +
+                "(ArduPilot stores each item as it arrives); upload it again first"
+            shouldThrow<MissionHalfWritten> { vehicle.action.continueMission() }
+            vehicle.mission.upload(waypoints(6))
+            shouldThrow<VehicleDisarmed> { vehicle.action.startMission() } // the list is whole again: on to the next check
         }
     }
 

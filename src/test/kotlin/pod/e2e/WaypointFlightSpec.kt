@@ -14,7 +14,9 @@ import pod.mavlink.MavlinkVehicle
 import pod.core.workflow.OnFailure
 import pod.mavlink.workflow.Stop
 import pod.core.workflow.WaypointActionFailed
+import pod.mavlink.workflow.NothingReported
 import pod.mavlink.workflow.WaypointFlight
+import pod.mavlink.workflow.measureRange
 import pod.sim.SimVehicle
 import pod.sim.SimVehicleConfig
 import pod.sim.fault.LinkFaults
@@ -93,6 +95,24 @@ class WaypointFlightSpec : StringSpec({
             failure.index shouldBe 0
             failure.message!!.contains("rangefinder dead") shouldBe true
             v.telemetry.position.value!!.relativeAltitude.meters shouldBeGreaterThan height - 2.0 // still up: nothing descended
+        } }
+    }
+
+    "a photo on simulated ArduCopter is confirmed by its CAMERA_FEEDBACK (ArduPilot 4.7 sends no CAMERA_IMAGE_CAPTURED); every wait that runs out says what it waited for" {
+        virtualRun(seed = 21) { flying(SimVehicleConfig(systemId = 84)) { v, sim ->
+            val home = up(v)
+            val records = WaypointFlight(v).fly(square(home).take(2), Stop(onFailure = OnFailure.Abort) { visit -> visit.takePhoto() })
+            records.map { it.result!!.index } shouldBe listOf(1, 2) // ArduPilot numbers its images from 1
+            sim.photos.value.size shouldBe 2
+            records.forEach { r -> r.result!!.location.distanceTo(absolute(r.point, home)).meters shouldBeLessThan 2.5 }
+
+            // No rangefinder: the wait names the message it waited for.
+            shouldThrow<NothingReported> { v.measureRange(3.seconds) }.message shouldBe
+                "vehicle 84 reported no downward rangefinder reading (DISTANCE_SENSOR) within 3.0 s"
+            val late = shouldThrow<WaypointActionFailed> {
+                WaypointFlight(v).fly(square(home).take(1), Stop(timeout = 2.seconds, onFailure = OnFailure.Abort) { delay(5.seconds) })
+            }
+            late.message shouldBe "the action at waypoint 0 failed after 1 try: the action at waypoint 0 did not finish within its time limit of 2.0 s"
         } }
     }
 }) {

@@ -11,7 +11,12 @@ import com.github.ajalt.clikt.parameters.types.choice
 import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.delay
+import kotlinx.coroutines.flow.filterNotNull
+import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
+import kotlinx.coroutines.withTimeoutOrNull
+import pod.core.units.Location
+import kotlin.time.Duration.Companion.seconds
 import pod.cli.json.Event
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.mission.InvalidMission
@@ -25,6 +30,7 @@ import pod.mavlink.plan.PlanListException
 import pod.mavlink.plan.PlanOnVehicle
 import pod.mavlink.plan.QgcPlan
 import pod.mavlink.plan.QgcPlanFile
+import pod.mavlink.plan.WplOnVehicle
 import java.io.IOException
 import java.nio.file.Path
 
@@ -50,13 +56,21 @@ internal abstract class MissionAction(out: Output, name: String) : VehicleComman
     /**
      * Collects [transfer] to its end, reporting its progress: a [TransferProgressView] for people (a
      * bar at a terminal, a few lines elsewhere, once the total is known), a JSON line per item for
-     * scripts. Returns the last progress (a download's carries the list).
+     * scripts; a transfer that waits before it starts says why, as vehicle [sysid]'s. Returns the last
+     * progress (a download's carries the list).
      */
-    protected suspend fun withProgress(action: String, transfer: Flow<TransferProgress>): TransferProgress? {
+    protected suspend fun withProgress(sysid: Int, action: String, transfer: Flow<TransferProgress>): TransferProgress? {
         var last: TransferProgress? = null
+        // A transfer that must wait before it starts says why (a vehicle still holding an abandoned upload).
+        fun waiting(p: TransferProgress): Boolean {
+            val reason = p.waiting ?: return false
+            if (json) emit(Event.Waiting(sysid, reason)) else out.line("vehicle $sysid: waiting: $reason")
+            return true
+        }
         if (json) {
             var shown = -1
             transfer.collect { p ->
+                if (waiting(p)) return@collect
                 last = p
                 if (p.done != shown) {
                     shown = p.done
@@ -70,6 +84,7 @@ internal abstract class MissionAction(out: Output, name: String) : VehicleComman
             val ticker = if (view.animated) launch { while (true) { delay(TransferProgressView.TICK); view.tick() } } else null
             try {
                 transfer.collect {
+                    if (waiting(it)) return@collect
                     last = it
                     view.update(it)
                 }
@@ -118,8 +133,10 @@ internal class MissionUpload(out: Output) : MissionAction(out, "upload") {
     }
 
     override suspend fun act(vehicle: MavlinkVehicle) {
-        plan?.let { lists = PlanOnVehicle.lists(it, vehicle.identity.value.autopilot) }
-        lists.forEach { (type, items) -> withProgress("uploading", vehicle.mission.uploading(items, type)) }
+        val autopilot = vehicle.identity.value.autopilot
+        // A .plan has no home item and a WPL file's mission has one in line 0: each as this autopilot keeps home.
+        lists = plan?.let { PlanOnVehicle.lists(it, autopilot) } ?: lists.map { (type, items) -> type to WplOnVehicle.toVehicle(items, type, autopilot) }
+        lists.forEach { (type, items) -> withProgress(vehicle.systemId, "uploading", vehicle.mission.uploading(items, type)) }
         val total = lists.sumOf { it.second.size }
         val message = if (lists.size == 1) {
             val (type, items) = lists.single()
@@ -145,19 +162,25 @@ internal class MissionDownload(out: Output) : MissionAction(out, "download") {
 
     override suspend fun act(vehicle: MavlinkVehicle) {
         if (LocalFiles.isPlan(file)) return downloadPlan(vehicle)
-        val items = withProgress("downloading", vehicle.mission.downloading(type))?.items.orEmpty()
+        val items = withProgress(vehicle.systemId, "downloading", vehicle.mission.downloading(type))?.items.orEmpty()
         try {
-            WplFile.write(Path.of(file), items)
+            WplFile.write(Path.of(file), WplOnVehicle.toFile(items, type, vehicle.identity.value.autopilot, homeFor(vehicle, items)))
         } catch (e: IOException) {
             fail("cannot write $file: ${e.message}")
         }
         finish("downloaded ${items(items.size, type)} from vehicle ${vehicle.systemId} to $file", vehicle, action = "download", items = items.size)
     }
 
+    // Line 0 of a PX4 mission file is the vehicle's home, which it reports once its estimator has an origin.
+    private suspend fun homeFor(vehicle: MavlinkVehicle, items: List<MissionItem>): Location? {
+        if (items.isEmpty() || type != MissionType.MISSION || vehicle.identity.value.autopilot == Autopilot.ARDUPILOT) return null
+        return withTimeoutOrNull(HOME_WAIT) { vehicle.telemetry.home.filterNotNull().first() }
+    }
+
     // All three lists into one .plan file; ArduPilot's mission item 0 is its home, the file's planned home.
     private suspend fun downloadPlan(vehicle: MavlinkVehicle) {
         val lists = listOf(MissionType.MISSION, MissionType.FENCE, MissionType.RALLY).associateWith { type ->
-            withProgress("downloading", vehicle.mission.downloading(type))?.items.orEmpty()
+            withProgress(vehicle.systemId, "downloading", vehicle.mission.downloading(type))?.items.orEmpty()
         }
         val plan = try {
             PlanOnVehicle.plan(lists.getValue(MissionType.MISSION), lists.getValue(MissionType.FENCE), lists.getValue(MissionType.RALLY), vehicle.identity.value.autopilot)
@@ -173,6 +196,9 @@ internal class MissionDownload(out: Output) : MissionAction(out, "download") {
         finish("downloaded $summary from vehicle ${vehicle.systemId} to $file", vehicle, action = "download", items = lists.values.sumOf { it.size })
     }
 }
+
+/** How long `pod mission download FILE` waits for a PX4 vehicle's home to write as line 0 (then 0, 0, 0). */
+private val HOME_WAIT = 5.seconds
 
 /** `pod mission clear`. */
 internal class MissionClear(out: Output) : MissionAction(out, "clear") {

@@ -201,7 +201,7 @@ public class MavlinkVehicle internal constructor(
         if (frame.componentId == _identity.value.componentId) heardMessages += frame.messageId
         if (message is Statustext) {
             val severity = Severity.entries.getOrElse(message.severity().value()) { Severity.DEBUG }
-            val lines = synchronized(texts) { texts.feed(severity, message.text(), message.id(), message.chunkSeq(), textClock.elapsedNow().inWholeNanoseconds) }
+            val lines = synchronized(texts) { texts.feed(severity, message.text(), message.id(), message.chunkSeq(), textClock.elapsedNow().inWholeNanoseconds, _identity.value.autopilot) }
             lines.forEach(::emitText)
         }
         val inbound = InboundMessage(frame, message)

@@ -7,6 +7,8 @@ import io.dronefleet.mavlink.common.Attitude
 import io.dronefleet.mavlink.common.AutopilotVersion
 import io.dronefleet.mavlink.common.CameraInformation
 import io.dronefleet.mavlink.common.CameraImageCaptured
+import io.dronefleet.mavlink.ardupilotmega.CameraFeedback
+import io.dronefleet.mavlink.ardupilotmega.CameraFeedbackFlags
 import io.dronefleet.mavlink.common.CommandAck
 import io.dronefleet.mavlink.common.DistanceSensor
 import io.dronefleet.mavlink.common.MavDistanceSensor
@@ -117,23 +119,81 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
     private var textId = 0
 
     /**
-     * STATUSTEXT for [text]: one message when it fits the 50-character field (id 0), else chunks
-     * of 50 with one new non-zero id and chunk_seq 0, 1, …, the last one shorter (empty when the
-     * text fills its chunks exactly), as ArduPilot's GCS::send_textv
-     * (libraries/GCS_MAVLink/GCS_Common.cpp) sends them. PX4 sends the same way.
+     * STATUSTEXT for [text], cut into 50-character chunks as the autopilot cuts them.
+     *
+     * ArduPilot (GCS::send_textv, libraries/GCS_MAVLink/GCS_Common.cpp): one message with id 0 when
+     * the text fits, else chunks with one new non-zero id and chunk_seq 0, 1, …, the last one
+     * shorter (empty when the text fills its chunks exactly).
+     *
+     * PX4 (MavlinkStreamStatustext::send, src/modules/mavlink/streams/STATUSTEXT.hpp): every text
+     * takes the next value of a uint16 counter that starts at 0 (`msg.id = _id++`), short ones too,
+     * so its first text, chunked or not, has id 0; the chunks stop with the one that holds the end,
+     * so a text that fills its chunks exactly has no empty chunk after it.
      */
     fun statusTexts(severity: Severity, text: String): List<Statustext> {
         // MAV_SEVERITY numbers are the core enum's order, EMERGENCY 0 to DEBUG 7.
         val level = EnumValue.create<MavSeverity>(severity.ordinal)
+        fun chunk(text: String, id: Int, seq: Int) = Statustext.builder().severity(level).text(text).id(id).chunkSeq(seq).build()
+        if (config.autopilot == Autopilot.PX4) {
+            val id = textId
+            textId = (textId + 1) and 0xFFFF
+            val count = maxOf(1, (text.length + TEXT_FIELD - 1) / TEXT_FIELD)
+            return (0 until count).map { i -> chunk(text.substring(i * TEXT_FIELD, minOf((i + 1) * TEXT_FIELD, text.length)), id, i) }
+        }
         if (text.length <= TEXT_FIELD) return listOf(Statustext.builder().severity(level).text(text).build())
         textId = if (textId >= 0xFFFF) 1 else textId + 1
         val chunks = (0..text.length / TEXT_FIELD).map { i -> text.substring(minOf(i * TEXT_FIELD, text.length), minOf((i + 1) * TEXT_FIELD, text.length)) }
-        return chunks.mapIndexed { i, chunk -> Statustext.builder().severity(level).text(chunk).id(textId).chunkSeq(i).build() }
+        return chunks.mapIndexed { i, part -> chunk(part, textId, i) }
     }
 
     /** The messages for one of the autopilot's [SimOutput]s (several for a long text). */
-    fun outputs(out: SimOutput, s: SimState, params: SimParameters): List<Any> =
-        if (out is SimOutput.Text) statusTexts(out.severity, out.text) else listOfNotNull(output(out, s, params))
+    fun outputs(out: SimOutput, s: SimState, params: SimParameters): List<Any> = when (out) {
+        is SimOutput.Text -> statusTexts(out.severity, out.text)
+        is SimOutput.Photo -> photoReports(out.photo, s)
+        else -> listOfNotNull(output(out, s, params))
+    }
+
+    /**
+     * What the vehicle sends for a photo it took.
+     *
+     * ArduPilot 4.7's own camera backends send CAMERA_FEEDBACK (180) and no CAMERA_IMAGE_CAPTURED:
+     * AP_Camera_Backend::take_picture → log_picture → prep_mavlink_msg_camera_feedback, which queues
+     * MSG_CAMERA_FEEDBACK on every link (GCS_SEND_MESSAGE) with img_idx counted from 1
+     * (libraries/AP_Camera/AP_Camera_Backend.cpp; SITL, CAM1_TYPE 1: IMAGE_START_CAPTURE ACCEPTED,
+     * then only CAMERA_FEEDBACK). A scenario with objects to detect stands for a companion computer
+     * that reports what it saw: its CAMERA_IMAGE_CAPTURED carries the detections ([SimDetections])
+     * just before the autopilot's CAMERA_FEEDBACK. PX4's MAVLink camera answers with
+     * CAMERA_IMAGE_CAPTURED.
+     */
+    private fun photoReports(photo: PhotoEvent, s: SimState): List<Any> {
+        if (config.autopilot != Autopilot.ARDUPILOT) return listOf(imageCaptured(photo, s))
+        val feedback = CameraFeedback.builder()
+            .timeUsec(BigInteger.valueOf(photo.time.inWholeMicroseconds))
+            .camIdx(0)
+            .imgIdx(photo.index + 1)
+            .lat(e7(photo.location.latitude))
+            .lng(e7(photo.location.longitude))
+            .altMsl(photo.location.altitude.meters.toFloat())
+            .altRel((photo.location.altitude.meters - s.home.altitude.meters).toFloat())
+            .yaw(photo.heading.degrees.toFloat())
+            .flags(CameraFeedbackFlags.CAMERA_FEEDBACK_PHOTO)
+            .build()
+        return if (config.objects.isEmpty()) listOf(feedback) else listOf(imageCaptured(photo, s), feedback)
+    }
+
+    private fun imageCaptured(photo: PhotoEvent, s: SimState): CameraImageCaptured = CameraImageCaptured.builder()
+        .timeBootMs(photo.time.inWholeMilliseconds)
+        .timeUtc(BigInteger.ZERO)
+        .cameraId(0)
+        .lat(e7(photo.location.latitude))
+        .lon(e7(photo.location.longitude))
+        .alt((photo.location.altitude.meters * 1000).roundToInt())
+        .relativeAlt(((photo.location.altitude.meters - s.home.altitude.meters) * 1000).roundToInt())
+        .q(listOf(1f, 0f, 0f, 0f))
+        .imageIndex(photo.index)
+        .captureResult(1)
+        .fileUrl(SimDetections.fileUrl(photo.index, photo.detected.map { it.id }))
+        .build()
 
     private fun output(out: SimOutput, s: SimState, params: SimParameters): Any? = when (out) {
         is SimOutput.Ack -> CommandAck.builder()
@@ -163,19 +223,7 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
             .breachTime(out.timeMs)
             .breachMitigation(EnumValue.create<FenceMitigate>(out.mitigation))
             .build()
-        is SimOutput.Photo -> CameraImageCaptured.builder()
-            .timeBootMs(out.photo.time.inWholeMilliseconds)
-            .timeUtc(BigInteger.ZERO)
-            .cameraId(0)
-            .lat(e7(out.photo.location.latitude))
-            .lon(e7(out.photo.location.longitude))
-            .alt((out.photo.location.altitude.meters * 1000).roundToInt())
-            .relativeAlt(((out.photo.location.altitude.meters - s.home.altitude.meters) * 1000).roundToInt())
-            .q(listOf(1f, 0f, 0f, 0f))
-            .imageIndex(out.photo.index)
-            .captureResult(1)
-            .fileUrl(SimDetections.fileUrl(out.photo.index, out.photo.detected.map { it.id }))
-            .build()
+        is SimOutput.Photo -> imageCaptured(out.photo, s)
     }
 
     /** Total mission items, for MISSION_CURRENT. */

@@ -310,8 +310,12 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
         }
     }
 
-    /** Resumes a mission paused by [pauseMission] (or held in a hold mode) at the item it was on. */
+    /**
+     * Resumes a mission paused by [pauseMission] (or held in a hold mode) at the item it was on;
+     * after an upload that did not complete: [pod.mavlink.mission.MissionHalfWritten].
+     */
     public suspend fun continueMission() {
+        vehicle.mission.requireWhole("resume the mission")
         val mission = role(ModeRole.MISSION)
         val inMission = vehicle.telemetry.mode.value?.name == mission
         if (pausedByCommand == true || (pausedByCommand == null && inMission)) {
@@ -328,10 +332,11 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
      * [VehicleDisarmed] before anything is sent; an ArduPilot copter's mission must begin with a
      * takeoff. [first] must be one of the vehicle's items ([NoSuchMissionItem]: the count is
      * downloaded first). ArduPilot refuses a start item in the command itself, so there the
-     * current item is set first.
+     * current item is set first. After an upload that did not complete: [pod.mavlink.mission.MissionHalfWritten].
      */
     public suspend fun startMission(first: Int? = null) {
         require(first == null || first >= 0) { "first must be ≥ 0, was $first" }
+        vehicle.mission.requireWhole("start the mission")
         val px4 = airframe().first == Autopilot.PX4
         // ArduCopter and ArduPlane take MISSION_START disarmed and switch to AUTO on the ground
         // (GCS_MAVLINK_Copter::handle_MAV_CMD_MISSION_START, ArduPlane's GCS_MAVLINK_Plane: set_mode

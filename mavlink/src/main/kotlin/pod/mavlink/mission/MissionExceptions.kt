@@ -9,7 +9,10 @@ public sealed class MissionException(message: String) : pod.core.PodException(me
     public abstract val type: MissionType
 }
 
-/** The vehicle answered with an error [result]; [seq] is the item it concerned, when known. */
+/**
+ * The vehicle answered with an error [result]; [seq] is the item it concerned, when known, and
+ * [explanation] what Pod makes of the refusal, when it knows more than the result says.
+ */
 public class MissionRejected(
     override val type: MissionType,
     /** What the vehicle said. */
@@ -17,7 +20,12 @@ public class MissionRejected(
     /** The item the vehicle most likely rejected (the last one it was sent), or null. */
     public val seq: Int?,
     operation: String,
-) : MissionException("$operation of ${type.name.lowercase()} rejected by the vehicle: ${result.name}" + (seq?.let { " (at item $it)" } ?: ""))
+    /** Why the vehicle most likely refused, and what Pod tried; null when the result says it all. */
+    public val explanation: String? = null,
+) : MissionException(
+    "$operation of ${type.name.lowercase()} rejected by the vehicle: ${result.name}" + (seq?.let { " (at item $it)" } ?: "") +
+        (explanation?.let { ": $it" } ?: ""),
+)
 
 /** No answer after [retries] timeouts in a row (the last one [lastTimeout] long). */
 public class MissionTimeout(
@@ -49,3 +57,18 @@ public class MissionNotConfirmed(
     /** What the vehicle holds now. */
     public val onBoard: List<MissionItem>,
 ) : MissionException("upload of ${type.name.lowercase()} not confirmed: the vehicle never acknowledged it and holds ${onBoard.size} other items")
+
+/**
+ * [action] was refused before anything was sent: this service's last upload of the [type] list did
+ * not complete (no final MISSION_ACK ACCEPTED, nor a download showing the list whole), and the
+ * vehicle may hold it half-written. ArduPilot stores each mission item as it arrives, so it would fly
+ * the new items up to where the upload stopped and the old ones after them.
+ */
+public class MissionHalfWritten(
+    override val type: MissionType,
+    /** What was refused ("start the mission", "resume the mission"). */
+    public val action: String,
+) : MissionException(
+    "cannot $action: the last upload of the ${type.name.lowercase()} list did not complete, so the vehicle may hold it half-written " +
+        "(ArduPilot stores each item as it arrives); upload it again first",
+)

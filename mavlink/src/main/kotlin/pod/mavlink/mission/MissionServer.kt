@@ -29,9 +29,15 @@ public enum class MissionServerFlavor {
  * ground station's messages and the clock (nanoseconds, any origin), send what it returns, and
  * call [onTimeout] when [nextTimeoutAt] passes.
  *
- * Unlike ArduPilot, a list is replaced only when its transfer completes: a failed or cancelled
- * upload leaves the old list whole. ArduPilot-flavoured downloads are stateless (any request, any
- * order); PX4-flavoured ones strictly sequential.
+ * The ArduPilot flavour writes each MISSION item into the list as it arrives, as ArduPilot does
+ * (MissionItemProtocol::handle_mission_item → MissionItemProtocol_Waypoints::replace_item /
+ * append_item → AP_Mission::replace_cmd / add_cmd, after MISSION_COUNT truncated the list to the new
+ * count: MissionItemProtocol_Waypoints::truncate), so an upload that stops half-way leaves a
+ * half-written mission that can be flown: new items up to where it stopped, old ones after. Its
+ * fence and rally lists, and every PX4 list, are replaced only when the transfer completes (PX4
+ * MavlinkMissionManager writes to the inactive dataman slot and switches on the final item).
+ * ArduPilot-flavoured downloads are stateless (any request, any order); PX4-flavoured ones
+ * strictly sequential.
  */
 public class MissionServer(
     /** Where the behaviour follows ArduPilot or PX4. */
@@ -161,7 +167,21 @@ public class MissionServer(
             completed = null
             return listOf(MissionMessage.Ack(type, MissionResult.ACCEPTED))
         }
+        if (writesAsItArrives(type)) lists[type] = list(type).take(count)
         return begin(Upload(type, List(count) { placeholder(type, it) }, 0, count - 1, 0, now), now)
+    }
+
+    /** ArduPilot stores each MISSION item as it arrives (see [MissionServer]). */
+    private fun writesAsItArrives(type: MissionType) = flavor == MissionServerFlavor.ARDUPILOT && type == MissionType.MISSION
+
+    /** Writes [item] into its list at once, replacing or appending, as ArduPilot's AP_Mission does. */
+    private fun store(item: MissionItem) {
+        val items = list(item.missionType).toMutableList()
+        val home = home
+        val kept = if (item.seq == 0 && home != null) home.copy(seq = 0, missionType = MissionType.MISSION) else item.copy(current = false)
+        val stored = ArduPilotMissionStorage.stored(kept, fixedWing)
+        if (item.seq < items.size) items[item.seq] = stored else items += stored
+        lists[item.missionType] = items
     }
 
     private fun onWritePartial(message: MissionMessage.WritePartial, now: Long): List<MissionMessage> {
@@ -200,6 +220,7 @@ public class MissionServer(
             return listOf(MissionMessage.Ack(up.type, problem))
         }
         up.buffer[item.seq] = item.copy(current = false)
+        if (writesAsItArrives(up.type)) store(item)
         up.lastActivity = now
         if (up.expected < up.end) {
             up.expected++

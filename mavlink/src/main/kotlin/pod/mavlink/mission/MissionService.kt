@@ -2,9 +2,7 @@ package pod.mavlink.mission
 
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeMark
-import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.Flow
@@ -12,6 +10,7 @@ import kotlinx.coroutines.flow.buffer
 import kotlinx.coroutines.flow.channelFlow
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
+import pod.core.units.toReadable
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleLost
 import pod.core.vehicle.VehicleType
@@ -30,7 +29,9 @@ import pod.mavlink.run
  * One transfer at a time per vehicle (callers queue). Each operation suspends until it is done and
  * throws a [MissionException] ([MissionRejected], [MissionTimeout], [InvalidMission],
  * [MissionNotConfirmed]) or [VehicleLost] otherwise; cancelling an upload or download tells the
- * vehicle with MISSION_ACK OPERATION_CANCELLED.
+ * vehicle with MISSION_ACK OPERATION_CANCELLED. After an upload that did not complete, the
+ * vehicle's actions refuse to start or resume the mission ([MissionHalfWritten]) until an upload
+ * completes or the list is cleared.
  */
 public class MissionService internal constructor(
     private val vehicle: MavlinkVehicle,
@@ -40,7 +41,7 @@ public class MissionService internal constructor(
     private val exclusive = Mutex()
     @Volatile private var servesInOrder = false
     private val appeared = vehicle.clock.markNow() // made with the vehicle, on its first heartbeat
-    private val cancelledUploads = java.util.concurrent.ConcurrentHashMap<MissionType, TimeMark>()
+    private val unfinished: MutableSet<MissionType> = java.util.concurrent.ConcurrentHashMap.newKeySet()
 
     /**
      * Uploads [items] as the vehicle's [type] list. When the vehicle's final acknowledgement never
@@ -82,7 +83,10 @@ public class MissionService internal constructor(
      */
     private suspend fun write(type: MissionType, items: List<MissionItem>, partialFrom: Int?, progress: (TransferProgress) -> Unit) {
         exclusive.withLock {
-            try {
+            // Marked until the vehicle confirms the whole list: an upload that fails or is cancelled
+            // half-way may leave it half-written (ArduPilot stores each item as it arrives).
+            unfinished += type
+            whileHeld(type, "upload", progress) {
                 untilServiceUp {
                     val identity = vehicle.identity.value
                     val machine = UploadConfirm(
@@ -96,12 +100,18 @@ public class MissionService internal constructor(
                         if (machine.check?.learnedInOrder == true) servesInOrder = true
                     }
                 }
-            } catch (e: CancellationException) {
-                cancelledUploads[type] = vehicle.clock.markNow()
-                throw e
             }
+            unfinished -= type
             progress(TransferProgress(items.size, items.size))
         }
+    }
+
+    /**
+     * Throws [MissionHalfWritten] when this service's last upload of [type] did not complete (and no
+     * clear followed): starting or resuming would fly whatever part of it the vehicle stored.
+     */
+    internal fun requireWhole(action: String, type: MissionType = MissionType.MISSION) {
+        if (type in unfinished) throw MissionHalfWritten(type, action)
     }
 
     /**
@@ -130,7 +140,7 @@ public class MissionService internal constructor(
 
     /** Downloads the vehicle's [type] list; [downloading] does the same and reports progress. */
     public suspend fun download(type: MissionType = MissionType.MISSION): List<MissionItem> =
-        exclusive.withLock { afterOwnCancel(type) { downloadLocked(type) {} } }
+        exclusive.withLock { whileHeld(type, "download", {}) { downloadLocked(type) {} } }
 
     /**
      * [download] as a flow of progress: collecting it runs the download; the last element carries
@@ -138,7 +148,7 @@ public class MissionService internal constructor(
      */
     public fun downloading(type: MissionType = MissionType.MISSION): Flow<TransferProgress> = channelFlow {
         val report = changes { trySend(it) }
-        val items = exclusive.withLock { afterOwnCancel(type) { downloadLocked(type, report) } }
+        val items = exclusive.withLock { whileHeld(type, "download", report) { downloadLocked(type, report) } }
         send(TransferProgress(items.size, items.size, items))
     }.buffer(Channel.UNLIMITED)
 
@@ -154,16 +164,34 @@ public class MissionService internal constructor(
     }
 
     /**
-     * Runs [attempt] again while the vehicle answers DENIED within [ABANDONED_UPLOAD_HOLD] of an
-     * upload of [type] that this service cancelled: ArduPilot ignores the cancelling MISSION_ACK
-     * and holds the abandoned upload until its own timeout (8 s), refusing downloads meanwhile.
+     * Runs [attempt] again while the vehicle answers DENIED, for [TransferTiming.deniedRetry] from
+     * the first refusal, telling [report] once why it waits: ArduPilot refuses every transfer while
+     * it holds an unfinished upload (one abandoned by this process or by an earlier one: it ignores
+     * the cancelling MISSION_ACK and drops the upload after 8 s without items). A refusal that
+     * outlasts the wait is thrown, saying so.
      */
-    private suspend fun <T> afterOwnCancel(type: MissionType, attempt: suspend () -> T): T =
-        retryingRefusal(MissionResult.DENIED, { cancelledUploads[type]?.let { ABANDONED_UPLOAD_HOLD - it.elapsedNow() } ?: Duration.ZERO }, attempt)
+    private suspend fun <T> whileHeld(type: MissionType, operation: String, report: (TransferProgress) -> Unit, attempt: suspend () -> T): T {
+        var since: TimeMark? = null
+        try {
+            return retryingRefusal(MissionResult.DENIED, {
+                val first = since ?: vehicle.clock.markNow().also {
+                    since = it
+                    report(TransferProgress(0, 0, waiting = STILL_HOLDING))
+                }
+                timing.deniedRetry - first.elapsedNow()
+            }, attempt)
+        } catch (e: MissionRejected) {
+            if (e.result != MissionResult.DENIED || since == null) throw e
+            throw MissionRejected(e.type, e.result, e.seq, operation, "$STILL_HOLDING (refused for ${timing.deniedRetry.toReadable()})")
+        }
+    }
 
     /** Deletes the vehicle's [type] list. */
     public suspend fun clear(type: MissionType = MissionType.MISSION) {
-        exclusive.withLock { vehicle.run(MissionCommand.clear(type, timing), wire(type, cancellable = false)) }
+        exclusive.withLock {
+            vehicle.run(MissionCommand.clear(type, timing), wire(type, cancellable = false))
+            unfinished -= type
+        }
     }
 
     /**
@@ -206,7 +234,7 @@ public class MissionService internal constructor(
      * encoded for it. A [cancellable] transfer tells the vehicle when the caller cancels, or it
      * refuses the next transfer (DENIED) until its own timeout: PX4's MavlinkMissionManager (and
      * MAVSDK) drop the transfer on MISSION_ACK OPERATION_CANCELLED; ArduPilot ignores it (see
-     * [afterOwnCancel]).
+     * [whileHeld]).
      */
     private fun wire(type: MissionType, cancellable: Boolean): Wire<MissionMessage, MissionMessage> {
         val identity = vehicle.identity.value
@@ -231,7 +259,7 @@ public class MissionService internal constructor(
         /** Pause between uploads refused while the vehicle's mission service starts. */
         val SERVICE_RETRY_PAUSE = 500.milliseconds
 
-        /** How long after cancelling an upload a DENIED download is taken for the vehicle still holding it (ArduPilot: 8 s). */
-        val ABANDONED_UPLOAD_HOLD = 10.seconds
+        /** Why a DENIED transfer waits (see [whileHeld]). */
+        const val STILL_HOLDING = "the vehicle is still holding an unfinished upload"
     }
 }

@@ -8,4 +8,9 @@ public data class TransferProgress(
     public val total: Int,
     /** The list a download received, on its last progress only; null otherwise (and for uploads). */
     public val items: List<MissionItem>? = null,
+    /**
+     * Why the transfer is waiting before it can start, when it is: the vehicle refused it for now
+     * (see [TransferTiming.deniedRetry]). Null otherwise.
+     */
+    public val waiting: String? = null,
 )

@@ -45,6 +45,15 @@ public data class TransferTiming(
      * the first seconds after boot. Later, NO_SPACE means the list does not fit and fails at once.
      */
     public val serviceStartup: Duration = 30.seconds,
+    /**
+     * How long an upload or download the vehicle refuses with DENIED is tried again. ArduPilot
+     * refuses every transfer but the upload it is receiving until that upload ends, and it ignores a
+     * ground station's MISSION_ACK CANCELLED: an upload abandoned by this process or an earlier one
+     * (an interrupted `pod mission upload`) is held until 8 s pass without an item
+     * (MissionItemProtocol::handle_mission_request_list and handle_mission_count answer DENIED
+     * while `receiving`; MissionItemProtocol::update times the upload out).
+     */
+    public val deniedRetry: Duration = 10.seconds,
 ) {
     init {
         require(minTimeout.isPositive()) { "minTimeout must be > 0, was $minTimeout" }
@@ -54,6 +63,7 @@ public data class TransferTiming(
         require(window in 1..256) { "window must be in 1..256, was $window" }
         require(!patience.isNegative()) { "patience must be ≥ 0, was $patience" }
         require(!serviceStartup.isNegative()) { "serviceStartup must be ≥ 0, was $serviceStartup" }
+        require(!deniedRetry.isNegative()) { "deniedRetry must be ≥ 0, was $deniedRetry" }
     }
 }
 

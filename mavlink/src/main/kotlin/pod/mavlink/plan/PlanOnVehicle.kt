@@ -54,7 +54,7 @@ public object PlanOnVehicle {
         )
     }
 
-    private fun keepsHome(autopilot: Autopilot) = autopilot == Autopilot.ARDUPILOT
+    internal fun keepsHome(autopilot: Autopilot) = autopilot == Autopilot.ARDUPILOT
 
     private const val NAV_WAYPOINT = 16
 }

@@ -3,7 +3,7 @@ package pod.mavlink.telemetry
 import pod.core.units.Distance
 import pod.core.units.Location
 
-/** A photo the vehicle reports taken (CAMERA_IMAGE_CAPTURED). */
+/** A photo the vehicle reports taken (CAMERA_IMAGE_CAPTURED, or ArduPilot's CAMERA_FEEDBACK). */
 public data class CapturedImage(
     /** Its number since boot (image_index). */
     public val imageIndex: Int,

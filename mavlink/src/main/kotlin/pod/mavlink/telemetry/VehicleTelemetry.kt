@@ -1,6 +1,7 @@
 package pod.mavlink.telemetry
 
 import io.dronefleet.mavlink.common.Attitude as AttitudeMessage
+import io.dronefleet.mavlink.ardupilotmega.CameraFeedback
 import io.dronefleet.mavlink.common.CameraImageCaptured
 import io.dronefleet.mavlink.common.DistanceSensor
 import io.dronefleet.mavlink.common.ExtendedSysState
@@ -51,6 +52,7 @@ public class VehicleTelemetry internal constructor() {
     private val _rangefinder = MutableStateFlow<Distance?>(null)
     private val _itemReached = MutableSharedFlow<Int>(extraBufferCapacity = 256, onBufferOverflow = BufferOverflow.DROP_OLDEST)
     private val _imagesCaptured = MutableSharedFlow<CapturedImage>(extraBufferCapacity = 256, onBufferOverflow = BufferOverflow.DROP_OLDEST)
+    private val _cameraFeedback = MutableSharedFlow<CapturedImage>(extraBufferCapacity = 256, onBufferOverflow = BufferOverflow.DROP_OLDEST)
 
     /** Global position, relative altitude, heading and velocity (GLOBAL_POSITION_INT). */
     public val position: StateFlow<Position?> = _position.asStateFlow()
@@ -103,6 +105,16 @@ public class VehicleTelemetry internal constructor() {
      */
     public val imagesCaptured: SharedFlow<CapturedImage> = _imagesCaptured.asSharedFlow()
 
+    /**
+     * Each photo the autopilot reports triggering with CAMERA_FEEDBACK (180), as it happens: what
+     * ArduPilot 4.7 sends for its own camera instead of CAMERA_IMAGE_CAPTURED
+     * (libraries/AP_Camera/AP_Camera_Backend.cpp, prep_mavlink_msg_camera_feedback). The image
+     * number is ArduPilot's (from 1), [CapturedImage.timeBootMs] is 0 (the message has UTC time only),
+     * [CapturedImage.fileUrl] is empty and [CapturedImage.success] true (it says only that the camera
+     * was triggered).
+     */
+    public val cameraFeedback: SharedFlow<CapturedImage> = _cameraFeedback.asSharedFlow()
+
     internal fun onHeartbeat(identity: VehicleIdentity, heartbeat: Heartbeat) {
         _mode.value = FlightModes.decode(identity.autopilot, identity.type, heartbeat.customMode())
         _armed.value = heartbeat.baseMode().value() and MAV_MODE_FLAG_SAFETY_ARMED != 0
@@ -144,17 +156,12 @@ public class VehicleTelemetry internal constructor() {
                 LandedState.entries.getOrElse(message.landedState().value()) { LandedState.UNDEFINED }
             is MissionCurrent -> _missionCurrent.value = message.seq()
             is MissionItemReached -> _itemReached.tryEmit(message.seq())
-            is CameraImageCaptured -> {
-                val lat = message.lat() / 1e7
-                val lon = message.lon() / 1e7
-                if (lat !in -90.0..90.0 || lon !in -180.0..180.0) return false
-                _imagesCaptured.tryEmit(
-                    CapturedImage(
-                        imageIndex = message.imageIndex(), timeBootMs = message.timeBootMs(),
-                        location = Location(lat, lon, (message.alt() / 1000.0).m), relativeAltitude = (message.relativeAlt() / 1000.0).m,
-                        success = message.captureResult() == 1, fileUrl = message.fileUrl() ?: "",
-                    ),
-                )
+            is CameraImageCaptured -> return photo(_imagesCaptured, message.lat(), message.lon(), message.alt() / 1000.0, message.relativeAlt() / 1000.0) { at, relative ->
+                CapturedImage(message.imageIndex(), message.timeBootMs(), at, relative, message.captureResult() == 1, message.fileUrl() ?: "")
+            }
+            // CAMERA_FEEDBACK carries UTC time (GPS), not time since boot, and says only that the camera was triggered.
+            is CameraFeedback -> return photo(_cameraFeedback, message.lat(), message.lng(), message.altMsl().toDouble(), message.altRel().toDouble()) { at, relative ->
+                CapturedImage(message.imgIdx(), 0, at, relative, success = true, fileUrl = "")
             }
             is DistanceSensor -> {
                 if (message.orientation().value() != MAV_SENSOR_ROTATION_PITCH_270) return true
@@ -166,6 +173,18 @@ public class VehicleTelemetry internal constructor() {
                 satellites = message.satellitesVisible().takeIf { it != UNKNOWN_U8 },
             )
         }
+        return true
+    }
+
+    /** Emits the photo [build] makes at [latE7]/[lonE7] (degrees × 1e7) to [flow]; false when the position is nonsense. */
+    private inline fun photo(
+        flow: MutableSharedFlow<CapturedImage>, latE7: Int, lonE7: Int, altitude: Double, relative: Double,
+        build: (Location, Distance) -> CapturedImage,
+    ): Boolean {
+        val lat = latE7 / 1e7
+        val lon = lonE7 / 1e7
+        if (lat !in -90.0..90.0 || lon !in -180.0..180.0) return false
+        flow.tryEmit(build(Location(lat, lon, altitude.m), relative.m))
         return true
     }
 

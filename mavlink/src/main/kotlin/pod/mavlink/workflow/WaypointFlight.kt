@@ -11,7 +11,8 @@ import kotlinx.coroutines.flow.combine
 import kotlinx.coroutines.flow.filterNotNull
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
-import kotlinx.coroutines.withTimeout
+import kotlinx.coroutines.flow.merge
+import kotlinx.coroutines.withTimeoutOrNull
 import pod.core.PodException
 import pod.core.queue.MissionQueue
 import pod.core.queue.QueueElement
@@ -164,7 +165,7 @@ public class WaypointFlight(
     private suspend fun settle() {
         val type = vehicle.identity.value.type
         if (type == pod.core.vehicle.VehicleType.FIXED_WING || type == pod.core.vehicle.VehicleType.VTOL) return
-        kotlinx.coroutines.withTimeoutOrNull(settleTimeout / timeScale) {
+        withTimeoutOrNull(settleTimeout / timeScale) {
             vehicle.telemetry.position.first { p ->
                 p != null && kotlin.math.hypot(p.velocityNorth.metersPerSecond, p.velocityEast.metersPerSecond) < settleSpeed
             }
@@ -177,9 +178,12 @@ public class WaypointFlight(
         while (true) {
             tries++
             val failure: Throwable = try {
-                return withTimeout(stop.timeout / timeScale) { stop.action(MavlinkWaypointVisit(index, point, vehicle)) } to tries
+                // Boxed, so that an action returning null is told apart from one that ran out of time.
+                val done = withTimeoutOrNull(stop.timeout / timeScale) { Finished(stop.action(MavlinkWaypointVisit(index, point, vehicle))) }
+                if (done != null) return done.value to tries
+                WaypointActionTimeout(index, stop.timeout)
             } catch (e: TimeoutCancellationException) {
-                e
+                e // a time limit of the action's own
             } catch (e: CancellationException) {
                 throw e
             } catch (e: Exception) {
@@ -232,19 +236,29 @@ public suspend fun MavlinkVehicle.measureRange(timeout: Duration = 5.seconds): D
     } catch (e: PodException) {
         // A vehicle that will not stream it may send it anyway (PX4 does, at 0.5 Hz); wait for it.
     }
-    return withTimeout(timeout) { telemetry.rangefinder.filterNotNull().first() }
+    return withTimeoutOrNull(timeout) { telemetry.rangefinder.filterNotNull().first() }
+        ?: throw NothingReported(systemId, "downward rangefinder reading (DISTANCE_SENSOR)", timeout)
 }
 
 /**
- * Takes one photo (MAV_CMD_IMAGE_START_CAPTURE, one image) and returns what the vehicle reports of
- * it (CAMERA_IMAGE_CAPTURED), within [timeout].
+ * Takes one photo (MAV_CMD_IMAGE_START_CAPTURE, one image) and returns the first report of it the
+ * vehicle sends within [timeout]: CAMERA_IMAGE_CAPTURED (PX4's camera, a MAVLink camera) or
+ * CAMERA_FEEDBACK (ArduPilot 4.7, which sends no CAMERA_IMAGE_CAPTURED for its own camera:
+ * AP_Camera_Backend::take_picture → prep_mavlink_msg_camera_feedback). A photo confirmed by
+ * CAMERA_FEEDBACK has an empty [Photo.fileUrl] and ArduPilot's image number (from 1).
+ *
+ * @throws NothingReported when neither report comes within [timeout].
  */
 public suspend fun MavlinkVehicle.takePhoto(timeout: Duration = 10.seconds): Photo = coroutineScope {
-    val next = async(start = CoroutineStart.UNDISPATCHED) { telemetry.imagesCaptured.first() }
+    val next = async(start = CoroutineStart.UNDISPATCHED) { merge(telemetry.imagesCaptured, telemetry.cameraFeedback).first() }
     commands.send(VehicleCommand(MavCommands.IMAGE_START_CAPTURE, param1 = 0f, param2 = 0f, param3 = 1f))
-    val image = withTimeout(timeout) { next.await() }
+    val image = withTimeoutOrNull(timeout) { next.await() }
+        ?: throw NothingReported(systemId, "photo (CAMERA_IMAGE_CAPTURED or CAMERA_FEEDBACK) after IMAGE_START_CAPTURE was accepted", timeout)
     Photo(image.imageIndex, image.location, image.relativeAltitude, image.success, image.fileUrl)
 }
+
+/** An action's result, null included. */
+private class Finished<R>(val value: R)
 
 /**
  * Lets a [WaypointFlight] be paused and tells who is watching where it is: while [paused] is true

@@ -98,7 +98,8 @@ class PhotoDetectionTest : StringSpec({
         ap.run(0.1)
         ap.photos.single().detected.shouldBeEmpty()
         val outputs = ap.drain().filterIsInstance<SimOutput.Photo>()
-        val messages = SimMessages(SimVehicleConfig(systemId = 1), TimeSource.Monotonic.markNow())
+        // PX4's camera reports it in CAMERA_IMAGE_CAPTURED (ArduPilot's sends CAMERA_FEEDBACK only: SimPhotoReportTest).
+        val messages = SimMessages(SimVehicleConfig(systemId = 1, autopilot = Autopilot.PX4), TimeSource.Monotonic.markNow())
         val captured = messages.outputs(outputs.single(), ap.state(), ap.params).single() as CameraImageCaptured
         SimDetections.parse(captured.fileUrl()) shouldBe SimDetections.Detections(0, emptyList())
     }
@@ -106,8 +107,8 @@ class PhotoDetectionTest : StringSpec({
     "the detections ride in CAMERA_IMAGE_CAPTURED's file_url and read back as the photo's ids" {
         val ap = world(null)
         val photo = ap.photoAt(-20.0, 50.0, 25f)
-        val messages = SimMessages(SimVehicleConfig(systemId = 1), TimeSource.Monotonic.markNow())
-        val captured = messages.outputs(SimOutput.Photo(photo), ap.state(), ap.params).single() as CameraImageCaptured
+        val messages = SimMessages(SimVehicleConfig(systemId = 1, objects = OBJECTS), TimeSource.Monotonic.markNow())
+        val captured = messages.outputs(SimOutput.Photo(photo), ap.state(), ap.params).filterIsInstance<CameraImageCaptured>().single()
         val read = SimDetections.parse(captured.fileUrl())!!
         read.imageIndex shouldBe photo.index
         read.ids shouldBe photo.detected.map { it.id }.sorted()
