@@ -42,8 +42,9 @@ class SimVehicleUdpSpec : StringSpec({
                     return withTimeout(5.seconds) { ack.await() }
                 }
 
-                command(176, 1f, 4f).result().value() shouldBe 0 // GUIDED
+                // GUIDED needs a position (ArduCopter's "Mode change to GUIDED failed: requires position").
                 withTimeout(10.seconds) { vehicle.telemetry.gps.filterNotNull().first { it.has3dFix } }
+                command(176, 1f, 4f).result().value() shouldBe 0 // GUIDED
                 val arm = command(400, 1f)
                 arm.result().value() shouldBe 0
                 arm.targetSystem() shouldBe gcs.config.systemId

@@ -266,14 +266,6 @@ public sealed interface Event {
     @Serializable @SerialName("mission")
     public data class Mission(val at: Double, val task: Int, val vehicle: Int, val what: String, val step: Int?, val steps: Int?) : Event
 
-    /**
-     * What the queue task [task] flies on [vehicle] did: [what] is `started` or `ended` (element
-     * [entry], described by [element]; [reason] `arrived`, `elapsed`, `replaced`, … for an end) or
-     * `emptied` (the vehicle holds).
-     */
-    @Serializable @SerialName("queue")
-    public data class Queue(val at: Double, val task: Int, val vehicle: Int, val what: String, val entry: Long?, val element: String?, val reason: String?) : Event
-
     /** [vehicle] was put in [state] (`HOLD` or `RETURN_HOME`) after its task ended early; [confirmed] is false when it did not confirm. */
     @Serializable @SerialName("made_safe")
     public data class MadeSafe(val at: Double, val vehicle: Int, val state: String, val confirmed: Boolean) : Event

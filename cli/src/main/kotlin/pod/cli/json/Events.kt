@@ -5,6 +5,7 @@ import pod.core.platform.MissionEvent
 import pod.core.vehicle.ConnectionState
 import pod.mavlink.FleetEvent
 import pod.mavlink.MavlinkVehicle
+import pod.cli.queue.toJson
 
 // Pod's own objects as the events `--json` prints: the model stays free of them, and each
 // conversion picks the fields a script needs (never an object's toString()).
@@ -58,14 +59,21 @@ internal fun EngineEvent.toEvent(): Event? {
             is MissionEvent.Loitering -> Event.Mission(at, task, vehicle, "loitering", step = e.step, steps = null)
             MissionEvent.Completed -> Event.Mission(at, task, vehicle, "completed", step = null, steps = null)
         }
-        is EngineEvent.Queue -> when (val e = event) {
-            is pod.core.queue.QueueEvent.Started -> Event.Queue(at, task, vehicle, "started", e.entry.id, e.entry.element.toString(), reason = null)
-            is pod.core.queue.QueueEvent.Ended -> Event.Queue(at, task, vehicle, "ended", e.entry.id, e.entry.element.toString(), e.reason.name.lowercase())
-            is pod.core.queue.QueueEvent.Emptied -> Event.Queue(at, task, vehicle, "emptied", entry = null, element = null, reason = null)
-        }
+        // The queue's own events, in the words `pod queue serve` prints them (at_s: the queue's time).
+        is EngineEvent.Queue -> queueEvent(vehicle, event)
         is EngineEvent.MadeSafe -> Event.MadeSafe(at, vehicle, state.name, confirmed)
         is EngineEvent.Picked -> Event.Picked(at, vehicles)
         is EngineEvent.Released -> Event.Released(at, vehicles)
         is EngineEvent.Message -> Event.Message(at, text)
+    }
+}
+
+/** [event] of vehicle [sysid]'s queue as `pod queue serve` prints it. */
+internal fun queueEvent(sysid: Int, event: pod.core.queue.QueueEvent): Event {
+    val at = event.at.inWholeMilliseconds / 1000.0
+    return when (event) {
+        is pod.core.queue.QueueEvent.Started -> Event.QueueStarted(at, sysid, event.entry.toJson())
+        is pod.core.queue.QueueEvent.Ended -> Event.QueueEnded(at, sysid, event.entry.toJson(), event.reason.name.lowercase())
+        is pod.core.queue.QueueEvent.Emptied -> Event.QueueEmptied(at, sysid)
     }
 }

@@ -88,15 +88,9 @@ internal class QueueView(private val out: Output, private val json: Boolean, pri
     }
 
     private fun show(event: QueueEvent) {
-        val at = event.at.inWholeMilliseconds / 1000.0
         val id = vehicle.systemId
         if (json) {
-            val line = when (event) {
-                is QueueEvent.Started -> Event.QueueStarted(at, id, event.entry.toJson())
-                is QueueEvent.Ended -> Event.QueueEnded(at, id, event.entry.toJson(), event.reason.name.lowercase())
-                is QueueEvent.Emptied -> Event.QueueEmptied(at, id)
-            }
-            return out.line(EventJson.encode(line))
+            return out.line(EventJson.encode(pod.cli.json.queueEvent(id, event)))
         }
         note(
             when (event) {

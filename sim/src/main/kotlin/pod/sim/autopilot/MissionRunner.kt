@@ -228,7 +228,7 @@ internal class MissionRunner(private val ap: SimAutopilot) {
         return when (it.command) {
             NAV_TAKEOFF, NAV_VTOL_TAKEOFF -> when {
                 !ap.armed -> Guidance.Idle
-                body.location.altitude.meters >= target.altitude.meters - if (ap.multirotor) 0.3 else 2.0 -> null
+                ap.takeoffReached(target.altitude.meters) -> null
                 else -> Guidance.Climb(target.altitude.meters)
             }
             NAV_LAND, NAV_VTOL_LAND -> {

@@ -276,7 +276,7 @@ internal class SimAutopilot(
 
     private fun afterStep() {
         when (val a = activity) {
-            is Activity.Takeoff -> if (body.location.altitude.meters >= a.altitude - if (multirotor) 0.3 else 2.0) {
+            is Activity.Takeoff -> if (takeoffReached(a.altitude)) {
                 // Take-off done, the mode takes over: GUIDED holds, LOITER with no stick input sinks.
                 if (a.then != null) setMode(a.then) else enterMode(modeName)
             }
@@ -404,6 +404,14 @@ internal class SimAutopilot(
      * PILOT_SPEED_UP when that is 0 (ArduCopter/Attitude.cpp Copter::get_pilot_speed_dn).
      */
     fun pilotDescentRate(): Double = params["PILOT_SPEED_DN"].takeIf { it > 0 }.let { it ?: params["PILOT_SPEED_UP"] } / 100
+
+    /**
+     * Whether a take-off to [target] (AMSL) is done: a multirotor within 0.3 m of it, a plane within
+     * 2 m, but neither lower than 1.5 m above the ground (a plane's take-off to PX4's default 2.5 m
+     * would otherwise end at 0.5 m, and the world's terrain check would end the flight).
+     */
+    fun takeoffReached(target: Double): Boolean =
+        body.location.altitude.meters >= maxOf(target - if (multirotor) 0.3 else 2.0, minOf(target, ground + 1.5))
 
     /** Take-off altitude (AMSL) for a take-off with [requested] metres (null: the flavour's default). */
     fun takeoffAltitude(requested: Double?): Double = home.altitude.meters + (

@@ -126,6 +126,7 @@ class CommandTest : StringSpec({
 
     "ArduPilot answers the legacy SET_MODE message with a COMMAND_ACK for command 11" {
         val ap = autopilot()
+        ap.run(2.5) // GUIDED needs a position
         ap.commands.handleSetMode(1, 4, 255, 190)
         ap.drain().filterIsInstance<SimOutput.Ack>().single() shouldBe SimOutput.Ack(11, CommandResult.ACCEPTED, 0, 255, 190)
         ap.modeName shouldBe "GUIDED"

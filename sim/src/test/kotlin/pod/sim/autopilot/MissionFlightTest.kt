@@ -29,8 +29,9 @@ class MissionFlightTest : StringSpec({
     "an ArduCopter flies take-off, five waypoints, two loiter turns and RTL in order and ends landed and disarmed at home" {
         val ap = autopilot()
         ap.load(listOf(homeItem()) + survey())
-        ap.mode("GUIDED") shouldBe CommandResult.ACCEPTED
+        // GUIDED needs a position (Copter::set_mode "requires position"): after boot's 2 s.
         ap.run(2.5)
+        ap.mode("GUIDED") shouldBe CommandResult.ACCEPTED
         ap.armCommand() shouldBe CommandResult.ACCEPTED
         ap.command(CommandRequest(300)) shouldBe CommandResult.ACCEPTED
         ap.modeName shouldBe "AUTO"
