@@ -125,4 +125,22 @@ class VehicleFlightSpec : StringSpec({
             } }
         }
     }
+
+    "an ArduCopter goto paused by another process resumes to its destination, not into a mission it does not have" {
+        virtualRun { flying(SimVehicleConfig(systemId = 34)) { vehicle, sim ->
+            val home = SimVehicleConfig.DEFAULT_HOME
+            Flights.keepArmedOnGround(vehicle)
+            vehicle.action.setMode("GUIDED")
+            vehicle.action.arm()
+            vehicle.action.takeoff(15.m)
+            val target = home.offset(north = 150.m, east = 0.m).copy(altitude = (home.altitude.meters + 15).m)
+            vehicle.action.goto(target)
+            withTimeout(2.minutes) { vehicle.telemetry.position.first { it!!.location.distanceTo(home).meters > 30 } }
+            // `pod pause` ran in another process: this one has not seen it.
+            vehicle.commands.send(pod.mavlink.command.VehicleCommand(MavCommands.DO_PAUSE_CONTINUE, param1 = 0f))
+            vehicle.action.continueMission()
+            vehicle.action.awaitArrival(target, within = 2.m, timeout = 3.minutes)
+            sim.state.value.modeName shouldBe "GUIDED"
+        } }
+    }
 })

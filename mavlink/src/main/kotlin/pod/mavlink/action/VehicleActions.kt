@@ -218,6 +218,9 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
                 param1 = speed?.metersPerSecond?.toFloat() ?: -1f,
                 param2 = REPOSITION_FLAG_CHANGE_MODE.toFloat(),
                 param4 = Float.NaN,
+        // Before the mode change: a disarmed ArduCopter would be left in GUIDED and then refuse
+        // the reposition with a bare FAILED.
+        requireArmed("fly to a point")
                 param5 = target.latitude, param6 = target.longitude, param7 = target.altitude.meters.toFloat(),
                 frame = MavFrames.GLOBAL_INT,
             ),
@@ -246,7 +249,8 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
     /**
      * Pauses the mission where the vehicle is, holding position and altitude: with
      * DO_PAUSE_CONTINUE where the autopilot supports it (ArduCopter), by switching to the hold
-     * mode otherwise. [continueMission] resumes at the same item either way.
+     * mode otherwise. [continueMission] resumes at the same item either way. A vehicle disarmed on
+     * the ground has nothing to pause ([NothingInFlight], nothing sent).
      */
     public suspend fun pauseMission() {
         try {
@@ -257,6 +261,7 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
                 e.result == CommandResult.UNSUPPORTED -> {
                     hold()
                     pausedByCommand = false
+        if (!vehicle.telemetry.armed.value) throw NothingInFlight(vehicle.systemId, "pause")
                 }
                 // ArduCopter fails a pause when already paused: after a lost ack, the first send did it.
                 e.result == CommandResult.FAILED && e.attempts > 1 -> pausedByCommand = true
@@ -265,16 +270,26 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
         }
     }
 
-    /** Resumes a mission paused by [pauseMission] (or held in a hold mode) at the item it was on. */
+    /**
+     * Resumes what [pauseMission] paused, by this process or another: a mission at the item it was
+     * on, or an ArduCopter's goto in GUIDED, which flies on to its destination. An ArduCopter in
+     * AUTO or GUIDED is resumed with DO_PAUSE_CONTINUE (ModeAuto::resume, ModeGuided::resume in
+     * ArduCopter/mode_auto.cpp and mode_guided.cpp); a vehicle in a hold mode is switched to the
+     * mission mode. A vehicle disarmed on the ground has nothing to resume ([NothingInFlight],
+     * nothing sent: switching it to AUTO would leave it there).
+     */
     public suspend fun continueMission() {
         val mission = role(ModeRole.MISSION)
-        val inMission = vehicle.telemetry.mode.value?.name == mission
-        if (pausedByCommand == true || (pausedByCommand == null && inMission)) {
+        val mode = vehicle.telemetry.mode.value?.name
+        val (autopilot, type) = airframe()
+        val pausedInMode = mode == mission || (autopilot == Autopilot.ARDUPILOT && type.isMultirotor && mode == role(ModeRole.GUIDED))
+        if (pausedByCommand == true || (pausedByCommand == null && pausedInMode)) {
             command(VehicleCommand(DO_PAUSE_CONTINUE, param1 = 1f))
         } else {
             setMode(mission)
         }
         pausedByCommand = null
+        if (!vehicle.telemetry.armed.value) throw NothingInFlight(vehicle.systemId, "resume")
     }
 
     /**
@@ -283,22 +298,26 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
      * [VehicleDisarmed] before anything is sent; an ArduPilot copter's mission must begin with a
      * takeoff. [first] must be one of the vehicle's items ([NoSuchMissionItem]: the count is
      * downloaded first). ArduPilot refuses a start item in the command itself, so there the
-     * current item is set first.
+     * current item is set first. With [arm], a disarmed vehicle is armed ([arm]) once the mission
+     * on board is known to hold [first] (or any item to fly), never before.
      */
-    public suspend fun startMission(first: Int? = null) {
+    public suspend fun startMission(first: Int? = null, arm: Boolean = false) {
         require(first == null || first >= 0) { "first must be ≥ 0, was $first" }
         val px4 = airframe().first == Autopilot.PX4
         // ArduCopter and ArduPlane take MISSION_START disarmed and switch to AUTO on the ground
         // (GCS_MAVLINK_Copter::handle_MAV_CMD_MISSION_START, ArduPlane's GCS_MAVLINK_Plane: set_mode
         // AUTO only), where the copter then refuses to arm ("Mode not armable"); PX4 arms itself
         // (Commander: VEHICLE_CMD_MISSION_START changes to AUTO_MISSION and calls arm()).
-        if (!px4) requireArmed("start the mission")
-        if (first != null) {
+        if (!px4 && !arm) requireArmed("start the mission")
+        if (first != null || arm) {
             // ArduPilot ignores MISSION_SET_CURRENT beyond its mission without a word
             // (GCS_MAVLINK::handle_mission_set_current answers only when set_current_cmd succeeds),
             // PX4 denies MISSION_START beyond seq_total: check against what the vehicle holds.
             val count = vehicle.mission.download().size
-            if (first >= count) throw NoSuchMissionItem(vehicle.systemId, if (count == 0) null else first, count)
+            // ArduPilot's item 0 is home: a mission to fly has more (ModeAuto::init: num_commands() > 1).
+            val empty = count <= (if (px4) 0 else 1)
+            if (first != null && first >= count) throw NoSuchMissionItem(vehicle.systemId, if (count == 0) null else first, count)
+            if (empty) throw NoSuchMissionItem(vehicle.systemId, null, count)
         }
         if (first != null && !px4) vehicle.mission.setCurrent(first)
         command(VehicleCommand(MISSION_START, param1 = if (px4 && first != null) first.toFloat() else 0f))
@@ -308,6 +327,7 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
     /** Sets the [kind] speed (DO_CHANGE_SPEED) for the current flight and mission. */
     public suspend fun setSpeed(speed: Speed, kind: SpeedKind = SpeedKind.GROUND) {
         require(speed.metersPerSecond > 0 && speed.metersPerSecond <= 100) { "speed must be in (0, 100] m/s, was $speed" }
+        if (arm && !vehicle.telemetry.armed.value) this.arm()
         command(VehicleCommand(DO_CHANGE_SPEED, param1 = SpeedTypes.of(kind).toFloat(), param2 = speed.metersPerSecond.toFloat(), param3 = -1f))
     }
 
