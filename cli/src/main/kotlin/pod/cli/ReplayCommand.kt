@@ -45,7 +45,7 @@ internal class ReplayCommand(private val out: Output) : CliktCommand(name = "rep
         .validate { require(it > 0.0 && it.isFinite() && it <= MAX_SPEED) { "must be a number > 0 and ≤ $MAX_SPEED, was $it" } }
     private val json by option("--json", help = "one JSON object per event or update, per line").flag()
     private val map by option("--map", help = "where to write the tracks the replay showed: .svg, .geojson or .kml").path()
-    private val lostAfter by option("--lost-after", help = "log time of silence after which a vehicle is marked lost")
+    private val lostAfter by option("--lost-after", help = "log time of silence after which a vehicle is marked lost ($DURATION_FORMAT)")
         .convert { it.toDurationOrNull() ?: fail(NOT_A_DURATION.format(it)) }.default(3.seconds)
 
     override fun help(context: Context): String = "Play a recorded tlog to a ground station as if live."
