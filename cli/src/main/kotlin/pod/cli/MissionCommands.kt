@@ -12,6 +12,10 @@ import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.launch
+import kotlinx.coroutines.flow.filterNotNull
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.withTimeoutOrNull
+import kotlin.time.Duration.Companion.seconds
 import pod.cli.json.Event
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.mission.InvalidMission
@@ -23,6 +27,7 @@ import pod.mavlink.mission.WplFile
 import pod.core.vehicle.Autopilot
 import pod.mavlink.plan.PlanListException
 import pod.mavlink.plan.PlanOnVehicle
+import pod.mavlink.plan.PlanSpeeds
 import pod.mavlink.plan.QgcPlan
 import pod.mavlink.plan.QgcPlanFile
 import java.io.IOException
@@ -155,12 +160,20 @@ internal class MissionDownload(out: Output) : MissionAction(out, "download") {
     }
 
     // All three lists into one .plan file; ArduPilot's mission item 0 is its home, the file's planned home.
+    // What the vehicle tells of itself goes in too (autopilot, airframe, home, default speed); what it
+    // does not is left out, never written as 0.
     private suspend fun downloadPlan(vehicle: MavlinkVehicle) {
         val lists = listOf(MissionType.MISSION, MissionType.FENCE, MissionType.RALLY).associateWith { type ->
             withProgress("downloading", vehicle.mission.downloading(type))?.items.orEmpty()
         }
+        val identity = vehicle.identity.value
+        // The station asks for HOME_POSITION on discovery; a vehicle that has a home answers within a moment.
+        val home = withTimeoutOrNull(HOME_WAIT) { vehicle.telemetry.home.filterNotNull().first() }
         val plan = try {
-            PlanOnVehicle.plan(lists.getValue(MissionType.MISSION), lists.getValue(MissionType.FENCE), lists.getValue(MissionType.RALLY), vehicle.identity.value.autopilot)
+            PlanOnVehicle.plan(
+                lists.getValue(MissionType.MISSION), lists.getValue(MissionType.FENCE), lists.getValue(MissionType.RALLY),
+                identity.autopilot, identity.type, home,
+            ).let { PlanSpeeds.from(vehicle, it) }
         } catch (e: PlanListException) {
             fail("vehicle ${vehicle.systemId}'s lists cannot be written as a .plan file: ${e.message}")
         }
@@ -186,3 +199,6 @@ internal class MissionClear(out: Output) : MissionAction(out, "clear") {
 
 /** "1 mission item", "25 fence items". */
 private fun items(count: Int, type: MissionType): String = "$count ${type.name.lowercase()} item" + if (count == 1) "" else "s"
+
+/** How long `download FILE.plan` waits for the vehicle's home, which the station asked for on discovery. */
+private val HOME_WAIT = 2.seconds

@@ -44,7 +44,9 @@ public object MapFeatures {
     /** The features of [plan]: its mission, fence zones, rally points and planned home; the mission is called [name]. */
     public fun of(plan: QgcPlan, name: String = "mission"): List<GeoFeature> = buildList {
         // A file may write an altitude as null (read as NaN): GeoJSON has no NaN, so it is drawn at 0.
-        val home = plan.plannedHome?.let { Location(it.latitude, it.longitude, it.altitude.orZero().m) }
+        // A home at 0°, 0° is one its writer did not know (Pod before issue 25 wrote [0, 0, 0]): not drawn.
+        val home = plan.plannedHome?.takeUnless { it.latitude == 0.0 && it.longitude == 0.0 }
+            ?.let { Location(it.latitude, it.longitude, it.altitude.orZero().m) }
         addAll(mission(plan.mission, name, home))
         plan.geoFence.polygons.forEachIndexed { i, p ->
             val vertices = p.vertices.map { Location(it.latitude, it.longitude) }
