@@ -17,7 +17,11 @@ import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.withTimeoutOrNull
 import kotlin.time.Duration.Companion.seconds
 import pod.cli.json.Event
+import pod.core.units.Location
+import pod.core.units.m
+import pod.mavlink.MavFrames
 import pod.mavlink.MavlinkVehicle
+import pod.mavlink.mission.MissionWarnings
 import pod.mavlink.mission.InvalidMission
 import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionType
@@ -122,7 +126,12 @@ internal class MissionUpload(out: Output) : MissionAction(out, "upload") {
         }
     }
 
+    private fun warnSuspiciousItems(vehicleHome: Location?) {
+        suspiciousItems(lists, plan, vehicleHome).forEach { if (json) emit(Event.Warning("$file: $it")) else out.line("warning: $file: $it") }
+    }
+
     override suspend fun act(vehicle: MavlinkVehicle) {
+        warnSuspiciousItems(vehicle.telemetry.home.value)
         plan?.let { lists = PlanOnVehicle.lists(it, vehicle.identity.value.autopilot) }
         lists.forEach { (type, items) -> withProgress("uploading", vehicle.mission.uploading(items, type)) }
         val total = lists.sumOf { it.second.size }
@@ -135,6 +144,18 @@ internal class MissionUpload(out: Output) : MissionAction(out, "upload") {
         }
         finish(message, vehicle, action = "upload", items = total)
     }
+}
+
+/**
+ * Says which of the mission's items sit below home or far away ([MissionWarnings]), measured from
+ * the vehicle's home, else the file's (a .plan's planned home, a WPL file's line 0 in frame 0).
+ */
+private fun suspiciousItems(lists: List<Pair<MissionType, List<MissionItem>>>, plan: QgcPlan?, vehicleHome: Location?): List<String> {
+    val mission = plan?.mission ?: lists.singleOrNull { it.first == MissionType.MISSION }?.second ?: return emptyList()
+    val lineZero = if (plan == null) mission.firstOrNull()?.takeIf { it.seq == 0 && it.frame == MavFrames.GLOBAL && (it.x != 0 || it.y != 0) } else null
+    val fileHome = plan?.plannedHome?.let { Location(it.latitude, it.longitude, it.altitude.m) }
+        ?: lineZero?.let { Location(it.latitude, it.longitude, it.z.toDouble().m) }
+    return MissionWarnings.of(if (lineZero != null) mission.drop(1) else mission, vehicleHome ?: fileHome)
 }
 
 /** `pod mission download FILE`. */
