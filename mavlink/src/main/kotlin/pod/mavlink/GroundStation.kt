@@ -110,7 +110,7 @@ public class GroundStation private constructor(
             }
         }
         scope.launch(CoroutineName("connection-tracking")) {
-            val tick = minOf(config.lostAfter / 4, 250.milliseconds)
+            val tick = config.silenceCheckEvery ?: minOf(config.lostAfter / 4, 250.milliseconds)
             while (isActive) {
                 delay(tick)
                 // Each in its own guard: whatever goes wrong in one pass (stats of a decoder in use,
