@@ -245,6 +245,17 @@ class BadInputSpec : StringSpec({
         ran.err.single() shouldBe "error: ${event.message}"
     }
 
+    "a tlog with no record at all is bad input, exit 2, whether it is to be mapped or played" {
+        val empty = dir.resolve("nothing.tlog").also { it.writeBytes(ByteArray(0)) }.path
+        for (args in listOf(listOf("map", empty, "--out", svgOut), listOf("replay", empty))) {
+            val ran = pod(*args.toTypedArray())
+            withClue(ran.text) {
+                ran.code shouldBe 2
+                ran.err.single() shouldBe "error: $empty is empty: no tlog record to ${if (args[0] == "map") "map" else "play"}"
+            }
+        }
+    }
+
     "a duration is one format in every option: a bare number is seconds, and units are welcome" {
         val ran = pod("watch", "--connect", "udpin:127.0.0.1:0", "--duration", "1", "--lost-after", "2", "--json")
         withClue(ran.text) { ran.code shouldBe 0 }
