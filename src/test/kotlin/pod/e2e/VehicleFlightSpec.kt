@@ -143,4 +143,17 @@ class VehicleFlightSpec : StringSpec({
             sim.state.value.modeName shouldBe "GUIDED"
         } }
     }
+
+    "an ArduPlane with no landing sequence on board lands at home after the approach the executor plans, not refused" {
+        virtualRun { flying(SimVehicleConfig(systemId = 35, type = VehicleType.FIXED_WING)) { vehicle, _ ->
+            val home = SimVehicleConfig.DEFAULT_HOME
+            vehicle.action.arm()
+            vehicle.action.takeoff(50.m)
+            vehicle.action.land()
+            vehicle.telemetry.mode.value?.name shouldBe "AUTO"
+            vehicle.action.awaitLanded(timeout = 15.minutes)
+            // ArduPlane floats on past the land point after its flare: on the runway, not where it was.
+            vehicle.telemetry.position.value!!.location.distanceTo(home).meters shouldBeLessThan 400.0
+        } }
+    }
 })

@@ -106,7 +106,7 @@ internal class TakeoffCommand(out: Output) : ActionCommand(out, "takeoff", "Take
     override suspend fun perform(vehicle: MavlinkVehicle) = vehicle.action.takeoff(altitude.m).let { "at ${altitude} m" }
 }
 
-internal class LandCommand(out: Output) : ActionCommand(out, "land", "Land (a plane through its mission's landing sequence).") {
+internal class LandCommand(out: Output) : ActionCommand(out, "land", "Land (an ArduPlane through its mission's landing sequence, or, with none on board, at home after a planned approach that replaces its mission).") {
     override val safeAsItIs: Boolean = true
     private val untilLanded by option("--until-landed", help = "wait for touchdown and disarm").flag()
     override suspend fun perform(vehicle: MavlinkVehicle): String {

@@ -184,13 +184,21 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
 
     /**
      * Lands: a multicopter where it is (NAV_LAND, confirmed by the LAND mode); an ArduPilot plane
-     * through its mission's landing sequence (DO_LAND_START, confirmed by AUTO). Returns when
-     * the landing has begun; [awaitLanded] waits for touchdown.
+     * through its mission's landing sequence (DO_LAND_START, confirmed by AUTO), or, when its
+     * mission has none, at home after the approach the mission executor plans ([PlaneLanding]:
+     * uploaded in place of the mission on board). Returns when the landing has begun;
+     * [awaitLanded] waits for touchdown.
      */
     public suspend fun land() {
         val (autopilot, type) = airframe()
         if (autopilot != Autopilot.PX4 && isPlane(type)) {
-            command(VehicleCommand(DO_LAND_START))
+            try {
+                command(VehicleCommand(DO_LAND_START))
+            } catch (e: CommandRejected) {
+                if (e.statusTexts.none { it.contains("No landing sequence", ignoreCase = true) }) throw e
+                PlaneLanding.plan(vehicle)
+                setMode(role(ModeRole.MISSION))
+            }
             confirmMode("land", ModeRole.MISSION)
         } else {
             command(VehicleCommand(NAV_LAND, param4 = Float.NaN, param5 = Double.NaN, param6 = Double.NaN))
@@ -210,6 +218,9 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
      * guided mode first. Returns once accepted; [awaitArrival] waits until it is there.
      */
     public suspend fun goto(target: Location, speed: Speed? = null) {
+        // Before the mode change: a disarmed ArduCopter would be left in GUIDED and then refuse
+        // the reposition with a bare FAILED.
+        requireArmed("fly to a point")
         val guided = role(ModeRole.GUIDED)
         if (airframe().first != Autopilot.PX4) setMode(guided)
         command(
@@ -218,9 +229,6 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
                 param1 = speed?.metersPerSecond?.toFloat() ?: -1f,
                 param2 = REPOSITION_FLAG_CHANGE_MODE.toFloat(),
                 param4 = Float.NaN,
-        // Before the mode change: a disarmed ArduCopter would be left in GUIDED and then refuse
-        // the reposition with a bare FAILED.
-        requireArmed("fly to a point")
                 param5 = target.latitude, param6 = target.longitude, param7 = target.altitude.meters.toFloat(),
                 frame = MavFrames.GLOBAL_INT,
             ),
@@ -253,6 +261,7 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
      * the ground has nothing to pause ([NothingInFlight], nothing sent).
      */
     public suspend fun pauseMission() {
+        if (!vehicle.telemetry.armed.value) throw NothingInFlight(vehicle.systemId, "pause")
         try {
             command(VehicleCommand(DO_PAUSE_CONTINUE, param1 = 0f))
             pausedByCommand = true
@@ -261,7 +270,6 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
                 e.result == CommandResult.UNSUPPORTED -> {
                     hold()
                     pausedByCommand = false
-        if (!vehicle.telemetry.armed.value) throw NothingInFlight(vehicle.systemId, "pause")
                 }
                 // ArduCopter fails a pause when already paused: after a lost ack, the first send did it.
                 e.result == CommandResult.FAILED && e.attempts > 1 -> pausedByCommand = true
@@ -279,6 +287,7 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
      * nothing sent: switching it to AUTO would leave it there).
      */
     public suspend fun continueMission() {
+        if (!vehicle.telemetry.armed.value) throw NothingInFlight(vehicle.systemId, "resume")
         val mission = role(ModeRole.MISSION)
         val mode = vehicle.telemetry.mode.value?.name
         val (autopilot, type) = airframe()
@@ -289,7 +298,6 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
             setMode(mission)
         }
         pausedByCommand = null
-        if (!vehicle.telemetry.armed.value) throw NothingInFlight(vehicle.systemId, "resume")
     }
 
     /**
@@ -319,6 +327,7 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
             if (first != null && first >= count) throw NoSuchMissionItem(vehicle.systemId, if (count == 0) null else first, count)
             if (empty) throw NoSuchMissionItem(vehicle.systemId, null, count)
         }
+        if (arm && !vehicle.telemetry.armed.value) this.arm()
         if (first != null && !px4) vehicle.mission.setCurrent(first)
         command(VehicleCommand(MISSION_START, param1 = if (px4 && first != null) first.toFloat() else 0f))
         confirmMode("start mission", ModeRole.MISSION)
@@ -327,7 +336,6 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
     /** Sets the [kind] speed (DO_CHANGE_SPEED) for the current flight and mission. */
     public suspend fun setSpeed(speed: Speed, kind: SpeedKind = SpeedKind.GROUND) {
         require(speed.metersPerSecond > 0 && speed.metersPerSecond <= 100) { "speed must be in (0, 100] m/s, was $speed" }
-        if (arm && !vehicle.telemetry.armed.value) this.arm()
         command(VehicleCommand(DO_CHANGE_SPEED, param1 = SpeedTypes.of(kind).toFloat(), param2 = speed.metersPerSecond.toFloat(), param3 = -1f))
     }
 

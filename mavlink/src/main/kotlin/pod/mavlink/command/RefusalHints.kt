@@ -29,6 +29,8 @@ internal object RefusalHints {
             }
             MavCommands.DO_PAUSE_CONTINUE -> pauseContinue(command.param1 == 0f, identity, mode)
             MavCommands.DO_REPOSITION -> if (!armed) "vehicle ${identity.systemId} is disarmed: arm it and take off first (`pod arm`, `pod takeoff ALT`)" else null
+            // ArduPlane starts a landing sequence only in flight (a bare FAILED on the ground).
+            MavCommands.DO_LAND_START -> if (!armed) "vehicle ${identity.systemId} is disarmed on the ground: there is nothing to land" else null
             else -> null
         }
     }
