@@ -83,6 +83,7 @@ class BadInputSpec : StringSpec({
         case("fly", "fly"),
         case("--vehicles", "sim", "--vehicles", "0"),
         case("fast", "sim", "--speedup", "fast"),
+        case("fast", "sim", "--time-scale", "fast"),
         case("nowhere", "sim", "--out", "nowhere"),
         case("254", "sim", "--sysid", "254", "--vehicles", "2"),
         case("65535", "sim", "--vehicles", "3", "--out", "udpin:127.0.0.1:65534"),
@@ -242,6 +243,22 @@ class BadInputSpec : StringSpec({
         val event = decodeEvent(ran.out.single()).shouldBeInstanceOf<Event.Error>()
         event.message shouldContain "THIS_NAME_IS_WAY_TOO_LONG_FOR_MAVLINK"
         ran.err.single() shouldBe "error: ${event.message}"
+    }
+
+    "a tlog with no record at all is bad input, exit 2, whether it is to be mapped or played" {
+        val empty = dir.resolve("nothing.tlog").also { it.writeBytes(ByteArray(0)) }.path
+        for (args in listOf(listOf("map", empty, "--out", svgOut), listOf("replay", empty))) {
+            val ran = pod(*args.toTypedArray())
+            withClue(ran.text) {
+                ran.code shouldBe 2
+                ran.err.single() shouldBe "error: $empty is empty: no tlog record to ${if (args[0] == "map") "map" else "play"}"
+            }
+        }
+    }
+
+    "a duration is one format in every option: a bare number is seconds, and units are welcome" {
+        val ran = pod("watch", "--connect", "udpin:127.0.0.1:0", "--duration", "1", "--lost-after", "2", "--json")
+        withClue(ran.text) { ran.code shouldBe 0 }
     }
 
     "an unexpected failure is one line and exit 1, not a stack trace" {

@@ -14,6 +14,7 @@ import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.withContext
 import pod.cli.Pod
 import pod.cli.json.Event
+import pod.core.units.m
 import pod.core.vehicle.Autopilot
 import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionType
@@ -137,6 +138,32 @@ class MissionCliSpec : StringSpec({
             } finally {
                 sim.stop()
                 Files.deleteIfExists(file)
+            }
+        }
+    }
+
+    "a WPL waypoint below home and kilometres away uploads with a warning for each, measured from the vehicle's home" {
+        coroutineScope {
+            val port = freePort()
+            val sim = SimVehicle(SimVehicleConfig(systemId = 18, gcs = "udpout://127.0.0.1:$port"))
+            val dir = Files.createTempDirectory("pod-mission-warn")
+            try {
+                sim.start(this)
+                val home = SimVehicleConfig.DEFAULT_HOME
+                fun at(seq: Int, north: Double, alt: Float, frame: Int = 3) = home.offset(north.m, 0.m).let {
+                    MissionItem(seq, frame, 16, x = Math.round(it.latitude * 1e7).toInt(), y = Math.round(it.longitude * 1e7).toInt(), z = alt)
+                }
+                val items = listOf(at(0, 0.0, home.altitude.meters.toFloat(), frame = 0), at(1, 100.0, 20f), at(2, 7_700.0, -20f))
+                val upload = dir.resolve("far.waypoints").also { WplFile.write(it, items) }
+                val out = Captured()
+                withContext(Dispatchers.IO) { Pod(out).parse(listOf("mission", "upload", upload.toString(), "--connect", "udpin:127.0.0.1:$port", "--json")) }
+                out.events.filterIsInstance<Event.Warning>().map { it.message.substringAfter(": ") } shouldBe listOf(
+                    "item 2 is 20 m below home", "item 2 is 7.7 km from home", "item 2 is 7.6 km from item 1 before it",
+                )
+                out.events.last().shouldBeInstanceOf<Event.Done>().items shouldBe 3
+            } finally {
+                sim.stop()
+                dir.toFile().deleteRecursively()
             }
         }
     }

@@ -69,6 +69,12 @@ class PlanCliSpec : StringSpec({
                 back.mission shouldBe fullPlan.mission
                 back.geoFence shouldBe fullPlan.geoFence
                 back.rallyPoints shouldBe fullPlan.rallyPoints
+                // What the vehicle tells of itself: autopilot, airframe, home (HOME_POSITION) and its default speed (MPC_XY_CRUISE).
+                (back.firmwareType to back.vehicleType) shouldBe (12 to 2)
+                back.hoverSpeed shouldBe 5.0
+                back.cruiseSpeed shouldBe null
+                val home = SimVehicleConfig.DEFAULT_HOME
+                back.plannedHome shouldBe PlanPosition(home.latitude, home.longitude, home.altitude.meters)
             } finally {
                 sim.stop()
                 dir.toFile().deleteRecursively()
@@ -111,7 +117,12 @@ class PlanCliSpec : StringSpec({
                     val back = QgcPlanFile.read(download)
                     // ArduPilot normalises what it stores (unused params and NaNs to 0, a DO_ command's
                     // frame to 0), and keeps its home in item 0, ahead of the plan's items, as QGC sends them.
-                    val kept = if (autopilot == Autopilot.ARDUPILOT) ArduPilotMissionStorage.stored(plan.mission, fixedWing = false) else plan.mission
+                    // A yaw ArduPilot does not store is written as unknown (null), not as the 0 it sends back.
+                    val kept = if (autopilot == Autopilot.ARDUPILOT) {
+                        ArduPilotMissionStorage.stored(plan.mission, fixedWing = false).map { if (it.command in setOf(16, 22) && it.param4 == 0f) it.copy(param4 = Float.NaN) else it }
+                    } else {
+                        plan.mission
+                    }
                     back.mission shouldBe kept
                     if (autopilot == Autopilot.ARDUPILOT) {
                         sim.missionServer.list(MissionType.MISSION).map { it.command } shouldBe listOf(16) + plan.mission.map { it.command }
@@ -119,7 +130,9 @@ class PlanCliSpec : StringSpec({
                         val home = SimVehicleConfig.DEFAULT_HOME
                         back.plannedHome!!.let { listOf(it.latitude, it.longitude, it.altitude) } shouldBe listOf(home.latitude, home.longitude, home.altitude.meters)
                     } else {
-                        back.plannedHome shouldBe null
+                        // PX4 keeps no home in its mission: the planned home is its HOME_POSITION.
+                        val home = SimVehicleConfig.DEFAULT_HOME
+                        back.plannedHome shouldBe PlanPosition(home.latitude, home.longitude, home.altitude.meters)
                     }
                     // Fence and rally travel as degrees × 10⁷: the plan's vertices come back rounded to that.
                     back.geoFence shouldBe PlanLists.fence(PlanLists.fenceItems(plan.geoFence))

@@ -212,6 +212,8 @@ class QueueCliSpec : StringSpec({
                 listOf("append", "goto", "--north", "1e6", "--east", "0") to "a local point must lie within 100.0 km of home",
                 listOf("append", "goto", "--north", "10", "--east", "0", "--alt", "-5") to "altitude must be in (0, 10000] m above home",
                 listOf("replace", "hold", "--duration", "Infinity") to "duration must be a finite number of seconds",
+                // A duration with units is taken as everywhere else: the point is what is refused.
+                listOf("append", "goto", "--north", "1e6", "--east", "0", "--duration", "30s") to "a local point must lie within 100.0 km of home",
             )) {
                 val ran = pod("queue", *args.toTypedArray(), "--control", control)
                 withClue(ran.text) {

@@ -66,13 +66,14 @@ class ScriptRunSpec : StringSpec({
         run.out shouldContainExactly listOf(distance, "fleet: Sim(count=3, timeScale=10.0)", "dsl: PodDsl", "args: alpha --beta")
     }
 
-    "the same script again runs from the cache and gets the link given with --connect" {
+    "the same script again runs from the cache and gets the link and time scale given with --connect" {
         // pod run tries a udpin port before compiling (a port in use is exit 2): a free one here.
         val address = "udpin://127.0.0.1:${freePort()}"
-        val run = pod("run", script("fleet-and-distance.main.kts"), "--connect", address)
+        // --time-scale for a simulator run faster (pod sim --time-scale 10): durations count in its time.
+        val run = pod("run", script("fleet-and-distance.main.kts"), "--connect", address, "--time-scale", "10")
         run.err shouldBe "" // nothing to compile
         run.exitCode shouldBe 0
-        run.out shouldContainExactly listOf(distance, "fleet: Connect(address=$address)", "dsl: PodDsl", "args: ")
+        run.out shouldContainExactly listOf(distance, "fleet: Connect(address=$address, timeScale=10.0)", "dsl: PodDsl", "args: ")
         cache.listFiles()!!.filter { it.name.endsWith(".jar") } shouldHaveSize 1
     }
 

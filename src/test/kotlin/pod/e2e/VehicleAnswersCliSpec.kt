@@ -166,4 +166,41 @@ class VehicleAnswersCliSpec : StringSpec({
             sim.state.value.relativeAltitude.meters shouldBeLessThan 1.0
         }
     }
+
+    "resume on a disarmed copter on the ground is refused with what to do, and its mode is left as it was" {
+        withSim(SimVehicleConfig(systemId = 72)) { sim, port ->
+            sim.missionServer.load(MissionType.MISSION, Flights.copterSurvey(SimVehicleConfig.DEFAULT_HOME))
+            val mode = withTimeout(10.seconds) { sim.state.first { it.modeName.isNotEmpty() } }.modeName
+            val (error, _) = pod(port, "resume")
+            error!!.statusCode shouldBe 1
+            error.message shouldBe "error: vehicle 72 is disarmed on the ground: there is no mission or goto in flight to resume; " +
+                "start the mission with `pod start --arm`"
+            sim.state.value.modeName shouldBe mode
+        }
+    }
+
+    "start --from beyond the mission with --arm refuses before arming" {
+        withSim(SimVehicleConfig(systemId = 73)) { sim, port ->
+            sim.missionServer.load(MissionType.MISSION, Flights.copterSurvey(SimVehicleConfig.DEFAULT_HOME))
+            val (error, _) = pod(port, "start", "--from", "9", "--arm")
+            error!!.statusCode shouldBe 1
+            error.message!! shouldContain "there is no item 9 to start from"
+            sim.state.value.armed shouldBe false
+        }
+    }
+
+    "goto and pause on a disarmed copter on the ground say why and what to do, not a bare FAILED" {
+        withSim(SimVehicleConfig(systemId = 74)) { sim, port ->
+            val mode = withTimeout(10.seconds) { sim.state.first { it.modeName.isNotEmpty() } }.modeName
+            val home = SimVehicleConfig.DEFAULT_HOME
+            val (gotoError, _) = pod(port, "goto", "${home.latitude}", "${home.longitude}", "20")
+            gotoError!!.statusCode shouldBe 1
+            gotoError.message shouldBe "error: vehicle 74 is disarmed: arm it first with `pod arm`, then take off with `pod takeoff ALT`"
+            sim.state.value.modeName shouldBe mode
+            val (pauseError, _) = pod(port, "pause")
+            pauseError!!.statusCode shouldBe 1
+            pauseError.message shouldBe "error: vehicle 74 is disarmed on the ground: there is no mission or goto in flight to pause; " +
+                "start a mission with `pod start --arm`"
+        }
+    }
 })

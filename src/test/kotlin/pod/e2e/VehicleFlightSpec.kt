@@ -125,4 +125,35 @@ class VehicleFlightSpec : StringSpec({
             } }
         }
     }
+
+    "an ArduCopter goto paused by another process resumes to its destination, not into a mission it does not have" {
+        virtualRun { flying(SimVehicleConfig(systemId = 34)) { vehicle, sim ->
+            val home = SimVehicleConfig.DEFAULT_HOME
+            Flights.keepArmedOnGround(vehicle)
+            vehicle.action.setMode("GUIDED")
+            vehicle.action.arm()
+            vehicle.action.takeoff(15.m)
+            val target = home.offset(north = 150.m, east = 0.m).copy(altitude = (home.altitude.meters + 15).m)
+            vehicle.action.goto(target)
+            withTimeout(2.minutes) { vehicle.telemetry.position.first { it!!.location.distanceTo(home).meters > 30 } }
+            // `pod pause` ran in another process: this one has not seen it.
+            vehicle.commands.send(pod.mavlink.command.VehicleCommand(MavCommands.DO_PAUSE_CONTINUE, param1 = 0f))
+            vehicle.action.continueMission()
+            vehicle.action.awaitArrival(target, within = 2.m, timeout = 3.minutes)
+            sim.state.value.modeName shouldBe "GUIDED"
+        } }
+    }
+
+    "an ArduPlane with no landing sequence on board lands at home after the approach the executor plans, not refused" {
+        virtualRun { flying(SimVehicleConfig(systemId = 35, type = VehicleType.FIXED_WING)) { vehicle, _ ->
+            val home = SimVehicleConfig.DEFAULT_HOME
+            vehicle.action.arm()
+            vehicle.action.takeoff(50.m)
+            vehicle.action.land()
+            vehicle.telemetry.mode.value?.name shouldBe "AUTO"
+            vehicle.action.awaitLanded(timeout = 15.minutes)
+            // ArduPlane floats on past the land point after its flare: on the runway, not where it was.
+            vehicle.telemetry.position.value!!.location.distanceTo(home).meters shouldBeLessThan 400.0
+        } }
+    }
 })

@@ -18,6 +18,7 @@ import pod.cli.json.Event
 import pod.core.units.Location
 import pod.core.units.m
 import pod.mavlink.MavlinkVehicle
+import pod.mavlink.action.NothingInFlight
 import pod.mavlink.action.VehicleDisarmed
 import kotlin.time.Duration.Companion.seconds
 
@@ -46,11 +47,16 @@ internal abstract class ActionCommand(out: Output, name: String, private val sum
     /** What to add when the action needs the vehicle armed and it is not: another way than `pod arm`, if the command has one. */
     protected open val armHint: String = ""
 
+    /** What to do instead when the vehicle is on the ground with nothing in flight to act on. */
+    protected open val groundHint: String = ""
+
     override suspend fun act(vehicle: MavlinkVehicle) {
         val text = try {
             perform(vehicle)
         } catch (e: VehicleDisarmed) {
             fail("vehicle ${e.systemId} is disarmed: arm it first with `pod arm`$armHint")
+        } catch (e: NothingInFlight) {
+            fail("${e.message}$groundHint")
         }
         finish("vehicle ${vehicle.systemId}: $text", vehicle, action = commandName)
     }
@@ -111,7 +117,7 @@ internal class TakeoffCommand(out: Output) : ActionCommand(
     }
 }
 
-internal class LandCommand(out: Output) : ActionCommand(out, "land", "Land (a plane through its mission's landing sequence).") {
+internal class LandCommand(out: Output) : ActionCommand(out, "land", "Land (an ArduPlane through its mission's landing sequence, or, with none on board, at home after a planned approach that replaces its mission).") {
     override val safeAsItIs: Boolean = true
     private val untilLanded by option("--until-landed", help = "wait for touchdown and disarm").flag()
     override suspend fun perform(vehicle: MavlinkVehicle): String {
@@ -144,6 +150,7 @@ internal class GotoCommand(out: Output) : ActionCommand(out, "goto", "Fly to LAT
     private val alt by argument("ALT", help = "metres above home").double().restrictTo(0.0..10_000.0)
     private val amsl by option("--amsl", help = "ALT is above mean sea level, not above home").flag()
     private val arrive by option("--arrive", help = "wait until the vehicle is there").flag()
+    override val armHint: String = ", then take off with `pod takeoff ALT`"
 
     override suspend fun perform(vehicle: MavlinkVehicle): String {
         val base = if (amsl) 0.0 else homeAltitude(vehicle)
@@ -165,10 +172,15 @@ internal class GotoCommand(out: Output) : ActionCommand(out, "goto", "Fly to LAT
 
 internal class PauseCommand(out: Output) : ActionCommand(out, "pause", "Pause the mission, holding position and altitude.") {
     override val safeAsItIs: Boolean = true
+    override val groundHint: String = "; start a mission with `pod start --arm`"
     override suspend fun perform(vehicle: MavlinkVehicle) = vehicle.action.pauseMission().let { "paused" }
 }
 
-internal class ResumeCommand(out: Output) : ActionCommand(out, "resume", "Continue a paused mission at the item it was on.") {
+internal class ResumeCommand(out: Output) : ActionCommand(
+    out, "resume",
+    "Continue what `pod pause` paused: a mission at the item it was on, or an ArduCopter's goto (refused on the ground).",
+) {
+    override val groundHint: String = "; start the mission with `pod start --arm`"
     override suspend fun perform(vehicle: MavlinkVehicle) = vehicle.action.continueMission().let { "resumed" }
 }
 
@@ -178,9 +190,8 @@ internal class StartCommand(out: Output) : ActionCommand(out, "start", "Start th
     override val armHint: String = ", or pass --arm"
 
     override suspend fun perform(vehicle: MavlinkVehicle): String {
-        // From whatever mode an earlier flight left it in (AUTO, RTL, LAND, BRAKE: not armable).
-        if (arm) vehicle.action.armForFlight()
-        vehicle.action.startMission(from)
+        // The mission on board is checked before the motors are armed.
+        vehicle.action.startMission(from, arm = arm)
         return "mission started" + (from?.let { " at item $it" } ?: "")
     }
 }

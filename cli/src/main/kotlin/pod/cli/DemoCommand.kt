@@ -25,7 +25,6 @@ import pod.samples.queueTour
 import pod.launch.simulate
 import pod.sim.SimFlavor
 import kotlin.io.path.Path
-import kotlin.time.Duration
 import kotlin.time.Duration.Companion.minutes
 import kotlin.time.Duration.Companion.seconds
 
@@ -39,8 +38,8 @@ import kotlin.time.Duration.Companion.seconds
 internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo") {
     private val count by option("--vehicles", help = "how many simulated drones").int().restrictTo(3..20).default(5)
     private val timeScale by option("--time-scale", help = "how much faster than real time the vehicles live").double().restrictTo(1.0..200.0).default(40.0)
-    private val length by option("--for", help = "how long the fleet keeps two drones on survey, in vehicle time (e.g. 30m)")
-        .convert { text -> Duration.parseOrNull(text)?.takeIf { it.isPositive() } ?: fail(NOT_A_DURATION.format(text)) }
+    private val length by option("--for", help = "how long the fleet keeps two drones on survey, in vehicle time (e.g. 30m; $DURATION_FORMAT)")
+        .convert { text -> text.toDurationOrNull() ?: fail(NOT_A_DURATION.format(text)) }
         .default(30.minutes)
     private val map by option("--map", help = "where to write the map of missions and tracks: .svg, .geojson or .kml").path().default(Path("pod-demo-map.svg"))
     private val json by option("--json", help = "JSON lines instead of text").flag()

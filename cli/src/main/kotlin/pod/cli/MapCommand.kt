@@ -39,6 +39,8 @@ internal class MapCommand(private val out: Output) : CliktCommand(name = "map") 
                     val flight = LocalFiles.readTracks(name)
                     // Not one whole record: not a tlog at all, rather than one cut short.
                     if (flight.records == 0L && flight.error != null) badInput("$name is not a tlog: ${flight.error!!.message}")
+                    // As pod replay: a log without a single record is bad input (exit 2), not an empty map.
+                    if (flight.records == 0L) badInput("$name is empty: no tlog record to map")
                     flight.error?.let { out.line("warning: $name: ${it.message}; mapped the ${flight.records} records before it") }
                     if (flight.tracks.isEmpty()) out.line("warning: $name: no vehicle heartbeat in ${flight.records} records")
                     flight.tracks.flatMap(MapFeatures::of)

@@ -18,7 +18,10 @@ import kotlinx.coroutines.withTimeoutOrNull
 import pod.core.units.Location
 import kotlin.time.Duration.Companion.seconds
 import pod.cli.json.Event
+import pod.core.units.m
+import pod.mavlink.MavFrames
 import pod.mavlink.MavlinkVehicle
+import pod.mavlink.mission.MissionWarnings
 import pod.mavlink.mission.InvalidMission
 import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionType
@@ -28,6 +31,7 @@ import pod.mavlink.mission.WplFile
 import pod.core.vehicle.Autopilot
 import pod.mavlink.plan.PlanListException
 import pod.mavlink.plan.PlanOnVehicle
+import pod.mavlink.plan.PlanSpeeds
 import pod.mavlink.plan.QgcPlan
 import pod.mavlink.plan.QgcPlanFile
 import pod.mavlink.plan.WplOnVehicle
@@ -132,7 +136,12 @@ internal class MissionUpload(out: Output) : MissionAction(out, "upload") {
         }
     }
 
+    private fun warnSuspiciousItems(vehicleHome: Location?) {
+        suspiciousItems(lists, plan, vehicleHome).forEach { if (json) emit(Event.Warning("$file: $it")) else out.line("warning: $file: $it") }
+    }
+
     override suspend fun act(vehicle: MavlinkVehicle) {
+        warnSuspiciousItems(vehicle.telemetry.home.value)
         val autopilot = vehicle.identity.value.autopilot
         // A .plan has no home item and a WPL file's mission has one in line 0: each as this autopilot keeps home.
         lists = plan?.let { PlanOnVehicle.lists(it, autopilot) } ?: lists.map { (type, items) -> type to WplOnVehicle.toVehicle(items, type, autopilot) }
@@ -147,6 +156,18 @@ internal class MissionUpload(out: Output) : MissionAction(out, "upload") {
         }
         finish(message, vehicle, action = "upload", items = total)
     }
+}
+
+/**
+ * Says which of the mission's items sit below home or far away ([MissionWarnings]), measured from
+ * the vehicle's home, else the file's (a .plan's planned home, a WPL file's line 0 in frame 0).
+ */
+private fun suspiciousItems(lists: List<Pair<MissionType, List<MissionItem>>>, plan: QgcPlan?, vehicleHome: Location?): List<String> {
+    val mission = plan?.mission ?: lists.singleOrNull { it.first == MissionType.MISSION }?.second ?: return emptyList()
+    val lineZero = if (plan == null) mission.firstOrNull()?.takeIf { it.seq == 0 && it.frame == MavFrames.GLOBAL && (it.x != 0 || it.y != 0) } else null
+    val fileHome = plan?.plannedHome?.let { Location(it.latitude, it.longitude, it.altitude.m) }
+        ?: lineZero?.let { Location(it.latitude, it.longitude, it.z.toDouble().m) }
+    return MissionWarnings.of(if (lineZero != null) mission.drop(1) else mission, vehicleHome ?: fileHome)
 }
 
 /** `pod mission download FILE`. */
@@ -178,12 +199,20 @@ internal class MissionDownload(out: Output) : MissionAction(out, "download") {
     }
 
     // All three lists into one .plan file; ArduPilot's mission item 0 is its home, the file's planned home.
+    // What the vehicle tells of itself goes in too (autopilot, airframe, home, default speed); what it
+    // does not is left out, never written as 0.
     private suspend fun downloadPlan(vehicle: MavlinkVehicle) {
         val lists = listOf(MissionType.MISSION, MissionType.FENCE, MissionType.RALLY).associateWith { type ->
             withProgress(vehicle.systemId, "downloading", vehicle.mission.downloading(type))?.items.orEmpty()
         }
+        val identity = vehicle.identity.value
+        // The station asks for HOME_POSITION on discovery; a vehicle that has a home answers within a moment.
+        val home = withTimeoutOrNull(HOME_WAIT) { vehicle.telemetry.home.filterNotNull().first() }
         val plan = try {
-            PlanOnVehicle.plan(lists.getValue(MissionType.MISSION), lists.getValue(MissionType.FENCE), lists.getValue(MissionType.RALLY), vehicle.identity.value.autopilot)
+            PlanOnVehicle.plan(
+                lists.getValue(MissionType.MISSION), lists.getValue(MissionType.FENCE), lists.getValue(MissionType.RALLY),
+                identity.autopilot, identity.type, home,
+            ).let { PlanSpeeds.from(vehicle, it) }
         } catch (e: PlanListException) {
             fail("vehicle ${vehicle.systemId}'s lists cannot be written as a .plan file: ${e.message}")
         }
@@ -212,3 +241,6 @@ internal class MissionClear(out: Output) : MissionAction(out, "clear") {
 
 /** "1 mission item", "25 fence items". */
 private fun items(count: Int, type: MissionType): String = "$count ${type.name.lowercase()} item" + if (count == 1) "" else "s"
+
+/** How long `download FILE.plan` waits for the vehicle's home, which the station asked for on discovery. */
+private val HOME_WAIT = 2.seconds

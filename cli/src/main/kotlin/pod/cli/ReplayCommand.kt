@@ -11,6 +11,7 @@ import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.options.validate
 import com.github.ajalt.clikt.parameters.types.double
 import com.github.ajalt.clikt.parameters.types.path
+import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.NonCancellable
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.first
@@ -19,6 +20,7 @@ import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.withContext
 import pod.cli.json.Event
 import pod.cli.json.EventJson
+import pod.core.time.Timebase
 import pod.launch.Interrupted
 import pod.launch.Interruption
 import pod.launch.map.FlightMap
@@ -45,7 +47,7 @@ internal class ReplayCommand(private val out: Output) : CliktCommand(name = "rep
         .validate { require(it > 0.0 && it.isFinite() && it <= MAX_SPEED) { "must be a number > 0 and ≤ $MAX_SPEED, was $it" } }
     private val json by option("--json", help = "one JSON object per event or update, per line").flag()
     private val map by option("--map", help = "where to write the tracks the replay showed: .svg, .geojson or .kml").path()
-    private val lostAfter by option("--lost-after", help = "log time of silence after which a vehicle is marked lost")
+    private val lostAfter by option("--lost-after", help = "log time of silence after which a vehicle is marked lost ($DURATION_FORMAT)")
         .convert { it.toDurationOrNull() ?: fail(NOT_A_DURATION.format(it)) }.default(3.seconds)
 
     override fun help(context: Context): String = "Play a recorded tlog to a ground station as if live."
@@ -59,9 +61,15 @@ internal class ReplayCommand(private val out: Output) : CliktCommand(name = "rep
         } catch (e: TlogException) {
             badInput(e.message!!)
         }
-        // A log cannot answer: the station asks it for nothing. Silence is measured in log time,
-        // but never less than 50 ms of real time, so a pause of this process is not a lost vehicle.
-        val config = GroundStationConfig(lostAfter = maxOf(lostAfter / speed, 50.milliseconds), streamRates = emptyMap(), requestHome = false, requestPayloads = false)
+        // A log cannot answer: the station asks it for nothing. Silence is measured in log time:
+        // the station reads the log's clock (a process that falls behind plays late, and nobody
+        // is lost for it), its loops pace on the wall clock, checking silence four times per
+        // --lost-after of log as it plays (at least every millisecond).
+        val config = GroundStationConfig(
+            lostAfter = lostAfter, streamRates = emptyMap(), requestHome = false, requestPayloads = false,
+            timebase = Timebase(link.logClock, Dispatchers.Default),
+            silenceCheckEvery = maxOf(lostAfter / speed / 4, 1.milliseconds),
+        )
         val gcs = GroundStation.open(link, this, config)
         val tracks = TrackRecorder()
         val recording = gcs.record(tracks)

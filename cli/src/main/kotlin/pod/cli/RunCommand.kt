@@ -37,7 +37,7 @@ internal class RunCommand : CliktCommand(name = "run") {
     private val scriptArgs by argument("ARGS", help = "passed to the script as args (put them after --)").multiple()
     private val sim by option("--sim", metavar = "N", help = "fly N simulated vehicles (default: 4)").int().restrictTo(1..254)
     private val connect by option("--connect", metavar = "ADDR", help = "fly the vehicles on this link (udpin://0.0.0.0:14550, …)")
-    private val timeScale by option("--time-scale", metavar = "X", help = "simulated seconds per real second (with --sim; default: 1)")
+    private val timeScale by option("--time-scale", metavar = "X", help = "vehicle seconds per real second (default: 1): the simulated fleet's with --sim; with --connect, that of a simulator run faster (pod sim --time-scale X), so the program's durations count in vehicle time")
         .double().restrictTo(0.01..1000.0)
 
     override fun help(context: Context): String =
@@ -86,13 +86,12 @@ internal class RunCommand : CliktCommand(name = "run") {
         val address = connect
         return when {
             address != null && sim != null -> throw UsageError("--sim and --connect exclude each other")
-            address != null && timeScale != null -> throw UsageError("--time-scale applies to simulated fleets (--sim) only")
             address != null -> {
                 val parsed = reportingLinkErrors { LinkAddress.parse(address) }
                 // A port that cannot be bound is bad input (exit 2), found before the script compiles.
                 // Only listening is tried: it takes nothing from anyone, where a TCP connect would.
                 if (parsed is LinkAddress.UdpIn && parsed.port != 0) tryListening(parsed)
-                FleetChoice.Connect(address)
+                FleetChoice.Connect(address, timeScale ?: 1.0)
             }
             else -> FleetChoice.Sim(sim ?: 4, timeScale ?: 1.0)
         }

@@ -30,7 +30,9 @@ internal class SimCommand(private val out: Output) : CliktCommand(name = "sim") 
         .default(VehicleType.QUADROTOR, defaultForHelp = "quad")
     private val autopilot by option("--autopilot", help = "autopilot flavour")
         .choice("ardupilot" to Autopilot.ARDUPILOT, "px4" to Autopilot.PX4).default(Autopilot.ARDUPILOT, defaultForHelp = "ardupilot")
-    private val speedup by option("--speedup", help = "simulated seconds per real second").double().restrictTo(0.01..1000.0).default(1.0)
+    // --time-scale as in pod run, survey, demo and queue serve; --speedup, its first name, still works.
+    private val speedup by option("--time-scale", "--speedup", metavar = "X", help = "simulated seconds per real second (--speedup: the same)")
+        .double().restrictTo(0.01..1000.0).default(1.0)
     private val sysid by option("--sysid", help = "system id of the first vehicle").int().restrictTo(1..254).default(1)
     private val json by option("--json", help = "JSON lines instead of text").flag()
 

@@ -46,7 +46,7 @@ internal abstract class VehicleCommandBase(protected val out: Output, name: Stri
     private val connect by option("--connect", help = "link to the vehicle (udpin:, udpout:, tcp:)").default("udpin:0.0.0.0:14550")
     private val sysid by option("--sysid", help = "the vehicle's system id (needed when several answer)").int().restrictTo(1..255)
     protected val json by option("--json", help = "JSON lines instead of text").flag()
-    private val wait by option("--wait", help = "how long to wait for the vehicle's heartbeat")
+    private val wait by option("--wait", help = "how long to wait for the vehicle's heartbeat ($DURATION_FORMAT)")
         .convert { it.toDurationOrNull() ?: fail(NOT_A_DURATION.format(it)) }.default(10.seconds)
 
     /** Checks local inputs (files) before any link is opened. */

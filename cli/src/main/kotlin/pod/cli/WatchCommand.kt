@@ -20,7 +20,6 @@ import pod.launch.Interruption
 import pod.mavlink.GroundStationConfig
 import pod.mavlink.tlog.TlogException
 import pod.mavlink.tlog.TlogWriter
-import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
 
 /** `pod watch`: shows every vehicle on a link, Pod's or not, live. */
@@ -28,9 +27,9 @@ internal class WatchCommand(private val out: Output) : CliktCommand(name = "watc
     private val connect by option("--connect", help = "link to listen on or connect to (udpin:, udpout:, tcp:)")
         .default("udpin:0.0.0.0:14550")
     private val json by option("--json", help = "one JSON object per event or update, per line").flag()
-    private val duration by option("--duration", help = "stop after this long (10s, 2m); default: until interrupted")
+    private val duration by option("--duration", help = "stop after this long ($DURATION_FORMAT); default: until interrupted")
         .convert { it.toDurationOrNull() ?: fail(NOT_A_DURATION.format(it)) }
-    private val lostAfter by option("--lost-after", help = "silence after which a vehicle is marked lost")
+    private val lostAfter by option("--lost-after", help = "silence after which a vehicle is marked lost ($DURATION_FORMAT)")
         .convert { it.toDurationOrNull() ?: fail(NOT_A_DURATION.format(it)) }.default(3.seconds)
     private val record by option("--record", help = "write every frame sent and received to this tlog (MAVProxy's and pymavlink's format)")
         .path()
@@ -76,8 +75,3 @@ internal class WatchCommand(private val out: Output) : CliktCommand(name = "watc
         Unit
     }
 }
-
-/** Parses "10s", "1m 30s", "500ms" or ISO-8601 ("PT10S") as a duration, for CLI options. */
-internal fun String.toDurationOrNull(): Duration? = Duration.parseOrNull(this)?.takeIf { it.isPositive() }
-
-internal const val NOT_A_DURATION = "'%s' is not a positive duration (try 10s, 2m, 500ms)"

@@ -12,7 +12,7 @@ package pod.launch
  * | property | values | default |
  * |---|---|---|
  * | `pod.fleet` | `sim:N` (1..254 vehicles) or `connect:ADDRESS` (a connection string as `pod watch` takes) | `sim:4` |
- * | `pod.timeScale` | simulated seconds per real second, 0.01..1000; only with `sim:N` | `1` |
+ * | `pod.timeScale` | vehicle seconds per real second, 0.01..1000: the simulated fleet's, or that of an external simulator run faster than real time (`pod sim --time-scale X`) | `1` |
  */
 public sealed interface FleetChoice {
     /** The same choice as system properties, as `pod run` sets them. */
@@ -34,23 +34,30 @@ public sealed interface FleetChoice {
             mapOf(FLEET_PROPERTY to "sim:$count", TIME_SCALE_PROPERTY to timeScale.toString())
     }
 
-    /** Real (or externally simulated) vehicles reached through [address], e.g. `udpin://0.0.0.0:14550`. */
+    /**
+     * Real (or externally simulated) vehicles reached through [address], e.g. `udpin://0.0.0.0:14550`,
+     * whose clocks run [timeScale] times real time (1 for real vehicles; X for `pod sim --time-scale X`).
+     */
     public data class Connect(
         /** The connection string, e.g. `udpin://0.0.0.0:14550`. */
         public val address: String,
+        /** Vehicle seconds per real second, 0.01..1000: the program's durations count in vehicle time. */
+        public val timeScale: Double = 1.0,
     ) : FleetChoice {
         init {
             require(address.isNotBlank()) { "address must not be blank" }
+            require(timeScale in 0.01..1000.0) { "timeScale must be in 0.01..1000, was $timeScale" }
         }
 
-        override fun toSystemProperties(): Map<String, String> = mapOf(FLEET_PROPERTY to "connect:$address")
+        override fun toSystemProperties(): Map<String, String> =
+            mapOf(FLEET_PROPERTY to "connect:$address") + (if (timeScale == 1.0) emptyMap() else mapOf(TIME_SCALE_PROPERTY to timeScale.toString()))
     }
 
     public companion object {
         /** `sim:N` or `connect:ADDRESS`. */
         public const val FLEET_PROPERTY: String = "pod.fleet"
 
-        /** Simulated seconds per real second for `sim:N`. */
+        /** Vehicle seconds per real second, for `sim:N` and `connect:ADDRESS` alike. */
         public const val TIME_SCALE_PROPERTY: String = "pod.timeScale"
 
         /** What a program gets when nothing chose a fleet. */
@@ -81,10 +88,9 @@ public sealed interface FleetChoice {
                     Sim(count, scale ?: 1.0)
                 }
                 value.startsWith("connect:") -> {
-                    require(scale == null) { "$TIME_SCALE_PROPERTY applies to simulated fleets only, not to $FLEET_PROPERTY=$value" }
                     val address = value.removePrefix("connect:")
                     require(address.isNotBlank()) { "$FLEET_PROPERTY=$value: the connection string is missing" }
-                    Connect(address)
+                    Connect(address, scale ?: 1.0)
                 }
                 else -> throw IllegalArgumentException("$FLEET_PROPERTY must be sim:N or connect:ADDRESS, was '$value'")
             }

@@ -43,7 +43,8 @@ public fun <T> pod(choice: FleetChoice = FleetChoice.fromSystemProperties(), pri
                 is FleetChoice.Connect -> {
                     val station = GroundStation.open(choice.address, this)
                     try {
-                        val platform = MavlinkPlatform(station)
+                        // Against a simulator run faster, the program's durations count in its time.
+                        val platform = MavlinkPlatform(station, choice.timeScale)
                         // Vehicles heard but still booting are not yet offered to `pick`: say what each lacks, once.
                         val said = HashSet<Pair<Int, String>>()
                         val booting = launch {

@@ -159,6 +159,32 @@ class SurveyMapTest : StringSpec({
         map.shouldFitItsViewBox()
     }
 
+    "a detection is named by the number the map shows for its backward stop, and by its forward waypoint counted from 1" {
+        val svg = parse(surveySvg(picture(), "I-Seed survey"))
+        val shown = svg.layer("backward-path").all("text").associate { it.getAttribute("data-waypoint").toInt() to it.textContent }
+        for (ring in svg.layer("detections").all("circle")) {
+            val i = ring.getAttribute("data-waypoint").toInt()
+            ring.textContent shouldBe "backward stop ${shown.getValue(i)} (forward waypoint ${i + 1}) detected something"
+        }
+    }
+
+    "vehicles ending at a shared home get labels that do not overlap; a home without a track is in the legend; planned items are numbered" {
+        val hop = Mission("hop", base, listOf(MissionStep.Waypoint(base.offset(100.m, 0.m, 20.m)), MissionStep.Waypoint(base.offset(300.m, 10.m, 20.m))))
+        val tracks = (1..3).associateWith { id -> "Copter $id" to listOf(base.offset((100 * id).m, 0.m), base) }
+        val homes = mapOf(1 to base, 2 to base, 3 to base, 4 to base.offset(-20.m, 0.m))
+        val map = parse(svg(listOf(1 to hop), tracks, "fleet", homes))
+        val labels = map.layer("flown").all("text").map { it.number("x") to it.number("y") }
+        labels.size shouldBe 3
+        labels.distinct().size shouldBe 3
+        for ((a, b) in labels.flatMapIndexed { i, a -> labels.drop(i + 1).map { a to it } }) {
+            withClue("$a and $b") { (kotlin.math.abs(a.second - b.second) >= 12.0) shouldBe true }
+        }
+        val legend = map.layer("legend").all("g").map { it.getAttribute("data-layer") }
+        legend shouldContainAll listOf("vehicle-1", "vehicle-2", "vehicle-3", "vehicle-4")
+        map.layer("planned").all("text").map { it.textContent } shouldContainExactly listOf("1", "2")
+        map.shouldFitItsViewBox()
+    }
+
     "a picture refuses waypoint indices outside its plan" {
         shouldThrow<IllegalArgumentException> { SurveyPicture(field, plan, listOf(plan.waypoints.size), emptyList(), "v") }
             .message shouldContain "forwardFlagged"

@@ -110,7 +110,7 @@ public class GroundStation private constructor(
             }
         }
         scope.launch(CoroutineName("connection-tracking")) {
-            val tick = minOf(config.lostAfter / 4, 250.milliseconds)
+            val tick = config.silenceCheckEvery ?: minOf(config.lostAfter / 4, 250.milliseconds)
             while (isActive) {
                 delay(tick)
                 // Each in its own guard: whatever goes wrong in one pass (stats of a decoder in use,
@@ -279,13 +279,19 @@ public class GroundStation private constructor(
                 streamRequests.restart(vehicle)
                 return
             }
-            if (vehicle != null && frame.componentId == vehicle.identity.value.componentId &&
-                vehicle._connection.compareAndSet(ConnectionState.LOST, ConnectionState.CONNECTED)
-            ) {
-                vehicle.peer = peer
-                vehicle.onFrame(frame, message)
-                _events.tryEmit(FleetEvent.Regained(vehicle))
-                streamRequests.restart(vehicle)
+            if (vehicle != null && frame.componentId == vehicle.identity.value.componentId && vehicle._connection.value == ConnectionState.LOST) {
+                // The frame (a heartbeat refreshes lastHeartbeat) and the turn to CONNECTED under the
+                // lock checkSilence reads them under: it never sees the vehicle regained with its
+                // old heartbeat time, which would mark it lost again at once.
+                val regained = synchronized(vehicle.connectionLock) {
+                    vehicle.peer = peer
+                    vehicle.onFrame(frame, message)
+                    vehicle._connection.compareAndSet(ConnectionState.LOST, ConnectionState.CONNECTED)
+                }
+                if (regained) {
+                    _events.tryEmit(FleetEvent.Regained(vehicle))
+                    streamRequests.restart(vehicle)
+                }
                 return
             }
         }
@@ -301,8 +307,10 @@ public class GroundStation private constructor(
         for (vehicle in _vehicles.value.values) {
             guarded { vehicle.flushStatusTexts() }
             val silence = vehicle.lastHeartbeat.elapsedNow()
-            if (silence > config.lostAfter &&
-                vehicle._connection.compareAndSet(ConnectionState.CONNECTED, ConnectionState.LOST)
+            if (silence > config.lostAfter && synchronized(vehicle.connectionLock) {
+                    vehicle.lastHeartbeat.elapsedNow() > config.lostAfter &&
+                        vehicle._connection.compareAndSet(ConnectionState.CONNECTED, ConnectionState.LOST)
+                }
             ) {
                 guarded { vehicle.markedLost() }
                 _events.tryEmit(FleetEvent.Lost(vehicle, silence))

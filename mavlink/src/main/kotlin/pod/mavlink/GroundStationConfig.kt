@@ -52,6 +52,12 @@ public data class GroundStationConfig(
      * on, whose delays follow that clock; a test passes a virtual one.
      */
     public val timebase: Timebase = Timebase.System,
+    /**
+     * How often, on [timebase]'s dispatcher, vehicles' silence is checked against [lostAfter];
+     * null: a quarter of [lostAfter], at most 250 ms. A replay whose clock is the log's own checks
+     * more often, so that a gap of a few seconds of log at a high speed is not missed.
+     */
+    public val silenceCheckEvery: Duration? = null,
 ) {
     init {
         require(systemId in 1..255) { "systemId must be in 1..255, was $systemId" }
@@ -62,6 +68,7 @@ public data class GroundStationConfig(
         require(streamRequestInterval.isPositive()) { "streamRequestInterval must be > 0, was $streamRequestInterval" }
         require(streamRequestRounds >= 1) { "streamRequestRounds must be ≥ 1, was $streamRequestRounds" }
         require(maxPeers >= 1) { "maxPeers must be ≥ 1, was $maxPeers" }
+        require(silenceCheckEvery == null || silenceCheckEvery.isPositive()) { "silenceCheckEvery must be > 0, was $silenceCheckEvery" }
         streamRates.forEach { (id, hz) -> require(hz > 0 && hz <= 1000) { "stream rate for message $id must be in (0, 1000] Hz, was $hz" } }
     }
 

@@ -42,6 +42,9 @@ public class MavlinkVehicle internal constructor(
 ) {
     private val _identity = MutableStateFlow(initial)
     internal val _connection = MutableStateFlow(ConnectionState.CONNECTED)
+
+    /** Held while the station turns [connection] on evidence ([lastHeartbeat] read, or a regaining frame applied). */
+    internal val connectionLock = Any()
     private val _messages = MutableSharedFlow<InboundMessage>(
         extraBufferCapacity = 1024,
         onBufferOverflow = BufferOverflow.DROP_OLDEST,

@@ -8,7 +8,11 @@ import com.github.ajalt.clikt.parameters.options.required
 import com.github.ajalt.clikt.parameters.options.varargValues
 import com.github.ajalt.clikt.parameters.types.double
 import pod.cli.Output
+import pod.cli.DURATION_FORMAT
+import pod.cli.NOT_A_DURATION
 import pod.cli.negativeNumbersAsArguments
+import kotlin.time.Duration
+import kotlin.time.DurationUnit
 
 /**
  * `pod queue MODE PATTERN …`: builds one element from the options, checks it as the queue will
@@ -21,7 +25,9 @@ internal abstract class PatternCommand(out: Output, name: String, private val in
         negativeNumbersAsArguments()
     }
 
-    private val duration by option("--duration", metavar = "S", help = "seconds at most (0 or less: no limit)").double()
+    // A number is seconds, as everywhere else (pod watch --duration 30 too); units are welcome.
+    private val duration by option("--duration", metavar = "DURATION", help = "how long at most ($DURATION_FORMAT; 0 or less: no limit)")
+        .convert { text -> text.trim().toDoubleOrNull() ?: Duration.parseOrNull(text.trim())?.toDouble(DurationUnit.SECONDS) ?: fail(NOT_A_DURATION.format(text)) }
     private val alt by option("--alt", metavar = "A", help = "metres above home (default: the vehicle's height as the element starts)").double()
 
     override fun help(context: Context): String = summary

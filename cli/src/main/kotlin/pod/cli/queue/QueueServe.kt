@@ -53,7 +53,7 @@ internal class QueueServe(out: Output) : VehicleCommandBase(out, "serve") {
 
     private val timeScale by option(
         "--time-scale", metavar = "X",
-        help = "vehicle seconds per real second, for a simulator running faster (pod sim --speedup X): durations count in vehicle time",
+        help = "vehicle seconds per real second, for a simulator running faster (pod sim --time-scale X): durations count in vehicle time",
     ).double().restrictTo(0.01..1000.0).default(1.0)
 
     override fun help(context: Context): String =

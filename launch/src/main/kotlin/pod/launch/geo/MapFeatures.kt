@@ -38,14 +38,19 @@ public object MapFeatures {
     /** `kind` of a home, planned or a vehicle's. */
     public const val HOME: String = "home"
 
+    /** Property of a mission line: its points' item numbers, comma separated. */
+    public const val NUMBERS: String = "numbers"
+
     /** `kind` of a flown track. */
     public const val TRACK: String = "track"
 
     /** The features of [plan]: its mission, fence zones, rally points and planned home; the mission is called [name]. */
     public fun of(plan: QgcPlan, name: String = "mission"): List<GeoFeature> = buildList {
         // A file may write an altitude as null (read as NaN): GeoJSON has no NaN, so it is drawn at 0.
-        val home = plan.plannedHome?.let { Location(it.latitude, it.longitude, it.altitude.orZero().m) }
-        addAll(mission(plan.mission, name, home))
+        // A home at 0°, 0° is one its writer did not know (Pod before issue 25 wrote [0, 0, 0]): not drawn.
+        val home = plan.plannedHome?.takeUnless { it.latitude == 0.0 && it.longitude == 0.0 }
+            ?.let { Location(it.latitude, it.longitude, it.altitude.orZero().m) }
+        addAll(mission(plan.mission, name, home, numberShift = 1))
         plan.geoFence.polygons.forEachIndexed { i, p ->
             val vertices = p.vertices.map { Location(it.latitude, it.longitude) }
             // QGC stores a polygon open; a file that closes it anyway is drawn the same.
@@ -64,10 +69,12 @@ public object MapFeatures {
 
     /**
      * A mission's path as a feature (none when fewer than two items have a position): the items
-     * in a global frame that fly to a place, their altitudes made absolute with [home] when given.
+     * in a global frame that fly to a place, their altitudes made absolute with [home] when given,
+     * each numbered by its seq plus [numberShift] (1 for a .plan's items, which QGC lists from 1).
      */
-    public fun mission(items: List<MissionItem>, name: String = "mission", home: Location? = null): List<GeoFeature> {
-        val points = items.filter { it.isGlobal && it.command in NAVIGATION && !(it.x == 0 && it.y == 0) }.map { item ->
+    public fun mission(items: List<MissionItem>, name: String = "mission", home: Location? = null, numberShift: Int = 0): List<GeoFeature> {
+        val flown = items.filter { it.isGlobal && it.command in NAVIGATION && !(it.x == 0 && it.y == 0) }
+        val points = flown.map { item ->
             val relative = item.frame !in ABSOLUTE_FRAMES
             val base = if (relative && home != null) home.altitude.meters else 0.0
             Location(item.latitude, item.longitude, (item.z.toDouble().orZero() + base).m)
@@ -77,6 +84,8 @@ public object MapFeatures {
             put("kind", MISSION)
             put("name", name)
             put("items", points.size.toLong())
+            // Each point's mission item number, as a ground station lists them (a plan's from 1, a WPL file's as its lines say).
+            put(NUMBERS, flown.joinToString(",") { (it.seq + numberShift).toString() })
             if (home == null && items.any { it.isGlobal && it.frame !in ABSOLUTE_FRAMES }) put("altitude", "relative to home")
         }
         return listOf(GeoFeature(GeoShape.Line(points), properties))

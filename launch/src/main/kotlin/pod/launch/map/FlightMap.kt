@@ -54,7 +54,7 @@ public class FlightMap(
                 is GeoShape.Line -> when {
                     kind == MapFeatures.TRACK && vehicle != null -> map.flown(vehicle, label, s.points)
                     vehicle != null -> map.planned(vehicle, label, s.points)
-                    else -> map.plannedPath(label, s.points)
+                    else -> map.plannedPath(label, s.points, (f.properties[MapFeatures.NUMBERS] as? String)?.split(","))
                 }
                 is GeoShape.Polygon -> map.fence(s.vertices, inclusion = f.properties["inclusion"] != false, label)
                 is GeoShape.Point -> {

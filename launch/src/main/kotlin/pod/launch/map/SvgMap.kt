@@ -38,6 +38,7 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
     private val zones = mutableListOf<Zone>()
     private val rally = mutableListOf<Location>()
     private val plans = mutableListOf<Pair<String, List<Location>>>()
+    private val planNumbers = mutableMapOf<Int, List<String>>()
 
     /** Adds [mission]'s path as planned for vehicle [vehicleId]. */
     internal fun planned(vehicleId: Int, mission: Mission) {
@@ -62,9 +63,14 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
         homes[vehicleId] = at
     }
 
-    /** Adds a mission path from a plan, not any one vehicle's: dashed, a dot per item. */
-    internal fun plannedPath(label: String, points: List<Location>) {
-        if (points.size >= 2) plans += label to points
+    /**
+     * Adds a mission path from a plan, not any one vehicle's: dashed, a dot per item, numbered by
+     * [numbers] (the items' numbers, one per point; null: 1, 2, 3… in order).
+     */
+    internal fun plannedPath(label: String, points: List<Location>, numbers: List<String>? = null) {
+        if (points.size < 2) return
+        planNumbers[plans.size] = numbers?.takeIf { it.size == points.size } ?: points.indices.map { (it + 1).toString() }
+        plans += label to points
     }
 
     /** Adds a fence polygon (vertices, not closed): an area to stay inside when [inclusion], else one to keep out of. */
@@ -174,9 +180,13 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
     private fun StringBuilder.vehicleLayers(px: Projection) {
         if (plans.isNotEmpty()) {
             appendLine("""<g id="plan-mission">""")
-            for ((label, points) in plans) {
+            plans.forEachIndexed { n, (label, points) ->
                 appendLine("""<polyline class="plan-path" fill="none" stroke="$PATH" stroke-width="1.5" stroke-dasharray="6 4" points="${px.points(points)}"><title>${escape(label)}</title></polyline>""")
-                points.forEach { p -> px.pixel(p).let { (x, y) -> appendLine("""<circle class="plan-item" cx="${fmt(x)}" cy="${fmt(y)}" r="2.5" fill="$PATH"/>""") } }
+                val numbers = planNumbers.getValue(n)
+                points.forEachIndexed { i, p -> px.pixel(p).let { (x, y) ->
+                    appendLine("""<circle class="plan-item" cx="${fmt(x)}" cy="${fmt(y)}" r="2.5" fill="$PATH"/>""")
+                    appendLine("""<text class="item-number" x="${fmt(x + 5)}" y="${fmt(y - 5)}" font-family="sans-serif" font-size="10" fill="$PATH">${escape(numbers[i])}</text>""")
+                } }
             }
             appendLine("</g>")
         }
@@ -188,10 +198,18 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
                 val style = if (planned) """stroke-width="1.5" stroke-dasharray="6 4" stroke-opacity="0.6"""" else """stroke-width="2.5""""
                 val colour = colour(line.vehicleId)
                 appendLine("""<polyline class="vehicle-${line.vehicleId}" fill="none" stroke="$colour" $style points="${px.points(line.points)}"><title>${escape(line.label)}</title></polyline>""")
-                if (planned) line.points.forEach { p -> px.pixel(p).let { (x, y) -> appendLine("""<circle cx="${fmt(x)}" cy="${fmt(y)}" r="2.5" fill="$colour"/>""") } }
+                if (planned) line.points.forEachIndexed { i, p -> px.pixel(p).let { (x, y) ->
+                    appendLine("""<circle cx="${fmt(x)}" cy="${fmt(y)}" r="2.5" fill="$colour"/>""")
+                    appendLine("""<text class="item-number vehicle-${line.vehicleId}" x="${fmt(x + 5)}" y="${fmt(y - 5)}" font-family="sans-serif" font-size="10" fill="$colour">${i + 1}</text>""")
+                } }
             }
-            // Each flown track's vehicle named where its track ends.
-            if (!planned) layer.associateBy { it.vehicleId }.forEach { (id, line) -> px.pixel(line.points.last()).let { (x, y) ->
+            // Each flown track's vehicle named where its track ends; tracks ending together (at a
+            // shared home) get their names one under the other, not on top of each other.
+            val taken = mutableListOf<Pair<Double, Double>>()
+            if (!planned) layer.associateBy { it.vehicleId }.forEach { (id, line) -> px.pixel(line.points.last()).let { (x, end) ->
+                var y = end
+                while (taken.any { (tx, ty) -> kotlin.math.abs(tx - x) < LABEL_WIDTH && kotlin.math.abs(ty - y) < LABEL_HEIGHT }) y += LABEL_HEIGHT
+                taken += x to y
                 appendLine("""<text class="vehicle-label vehicle-$id" x="${fmt(x + 6)}" y="${fmt(y - 6)}" font-family="sans-serif" font-size="11" fill="${colour(id)}">${escape(line.label)}</text>""")
             } }
             appendLine("</g>")
@@ -201,7 +219,7 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
     private fun StringBuilder.forwardLayers(px: Projection) {
         if (forward.isNotEmpty()) {
             appendLine("""<g id="forward-path">""")
-            for ((photographed, run) in legs(forward)) {
+            for ((photographed, run) in surveyLegs(forward)) {
                 val style = if (photographed) """class="track-leg" stroke-width="1.5"""" else """class="turn-leg" stroke-width="1.2" stroke-dasharray="2 3""""
                 appendLine("""<polyline $style fill="none" stroke="$PATH" points="${px.points(run)}"/>""")
             }
@@ -241,8 +259,11 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
         }
         if (detections.isNotEmpty()) {
             appendLine("""<g id="detections">""")
+            // Named as the map numbers them: the backward stop's number (1, 2, …) where it is one.
+            val stops = backward.mapIndexed { n, (i, _) -> i to n + 1 }.toMap()
             for ((i, l) in detections) px.pixel(l).let { (x, y) ->
-                appendLine("""<circle class="detection" data-waypoint="$i" cx="${fmt(x)}" cy="${fmt(y)}" r="6" fill="none" stroke="$DETECTION" stroke-width="2.5"><title>waypoint $i detected something</title></circle>""")
+                val name = stops[i]?.let { "backward stop $it (forward waypoint ${i + 1})" } ?: "forward waypoint ${i + 1}"
+                appendLine("""<circle class="detection" data-waypoint="$i" cx="${fmt(x)}" cy="${fmt(y)}" r="6" fill="none" stroke="$DETECTION" stroke-width="2.5"><title>$name detected something</title></circle>""")
             }
             appendLine("</g>")
         }
@@ -262,7 +283,7 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
         if (area.isNotEmpty()) add(LegendEntry("survey-area", Swatch.AREA, AREA, "survey area"))
         if (forward.isNotEmpty()) {
             add(LegendEntry("forward-path", Swatch.SOLID, PATH, "forward path (tracks)"))
-            if (legs(forward).any { !it.first }) add(LegendEntry("forward-path", Swatch.DOTTED, PATH, "turnaround / transit legs"))
+            if (surveyLegs(forward).any { !it.first }) add(LegendEntry("forward-path", Swatch.DOTTED, PATH, "turnaround / transit legs"))
             if (forward.any { it.photo }) add(LegendEntry("photo-waypoints", Swatch.DOT, PATH, "photo waypoint"))
         }
         if (zones.any { it.inclusion }) add(LegendEntry("fence", Swatch.FENCE_IN, INCLUSION, "fence: stay inside"))
@@ -270,7 +291,8 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
         if (plans.isNotEmpty()) add(LegendEntry("plan-mission", Swatch.DASHED, PATH, "planned mission"))
         if (lines.any { it.planned }) add(LegendEntry("planned", Swatch.DASHED, NEUTRAL, "planned mission (dashed)"))
         if (lines.any { !it.planned }) add(LegendEntry("flown", Swatch.SOLID, NEUTRAL, "flown track (solid)"))
-        for (id in lines.map { it.vehicleId }.distinct().sorted()) {
+        // A vehicle known by its home alone (a log with no track) is named in the legend too.
+        for (id in (lines.map { it.vehicleId } + homes.keys.filter { it != 0 }).distinct().sorted()) {
             add(LegendEntry("vehicle-$id", Swatch.SOLID, colour(id), vehicleNames[id] ?: "vehicle $id"))
         }
         if (homes.isNotEmpty()) add(LegendEntry("homes", Swatch.SQUARE, NEUTRAL, "home"))
@@ -285,6 +307,10 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
         const val TOP = 44.0
         const val BOTTOM = 40.0
         const val MIN_WIDTH = 360.0
+
+        /** A vehicle label's room: labels closer than this across and down are stacked. */
+        const val LABEL_WIDTH = 60.0
+        const val LABEL_HEIGHT = 13.0
 
         val PALETTE = listOf("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2")
 
@@ -301,25 +327,6 @@ internal class SvgMap(private val maxWidth: Int = 900, private val maxHeight: In
 
         /** A vehicle's colour; id 0 (a plan's planned home, no vehicle's) is neutral. */
         fun colour(vehicleId: Int) = if (vehicleId == 0) NEUTRAL else PALETTE[(vehicleId - 1).mod(PALETTE.size)]
-
-        /**
-         * The path through [waypoints] cut into runs of legs of one kind: photographed (along a
-         * track, between its start and end) or not (turnaround extensions, transits, the turn to
-         * the next track). Neighbouring runs share their joining waypoint.
-         */
-        fun legs(waypoints: List<SurveyWaypoint>): List<Pair<Boolean, List<Location>>> {
-            val runs = mutableListOf<Pair<Boolean, MutableList<Location>>>()
-            for (i in 0 until waypoints.size - 1) {
-                val a = waypoints[i]
-                val b = waypoints[i + 1]
-                val photographed = a.onTrack() && b.onTrack() && a.track == b.track && !a.trackEnd
-                if (runs.lastOrNull()?.first != photographed) runs += photographed to mutableListOf(a.location)
-                runs.last().second += b.location
-            }
-            return runs
-        }
-
-        private fun SurveyWaypoint.onTrack() = !turnaround && !transit
 
         fun distance(metres: Double): String = when {
             metres >= 1000 -> "${trim(metres / 1000)} km"

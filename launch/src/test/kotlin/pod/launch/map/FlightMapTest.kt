@@ -121,6 +121,18 @@ class FlightMapTest : FunSpec({
         FlownTrack(Arb.int(1..250).bind(), VehicleType.QUADROTOR, List(Arb.int(0..30).bind()) { start.offset((it * 7).m, (it * 3).m, it.m) }, emptyList(), if (Arb.boolean().bind()) start else null)
     }
 
+    test("a plan's waypoints carry their item numbers as QGC lists them (the take-off, with no position, is 1)") {
+        val svg = parse(FlightMap("field").plan(plan).svg())
+        svg.group("plan-mission").elements("text").map { it.textContent } shouldBe listOf("2", "3", "4")
+    }
+
+    test("a planned home at 0°, 0° is one the file's writer did not know: not drawn, and the map stays around the mission") {
+        val unknownHome = plan.copy(plannedHome = PlanPosition(0.0, 0.0, 0.0))
+        MapFeatures.of(unknownHome).filter { it.properties["kind"] == MapFeatures.HOME } shouldBe emptyList()
+        MapFeatures.of(unknownHome).single { it.properties["kind"] == MapFeatures.MISSION } shouldBe
+            MapFeatures.of(plan.copy(plannedHome = null)).single { it.properties["kind"] == MapFeatures.MISSION }
+    }
+
     test("a map written as GeoJSON and read back has the same features, and draws the same SVG") {
         checkAll(150, randomPlan, Arb.list(randomTrack, 0..3)) { p, tracks ->
             val map = FlightMap("round trip").plan(p)

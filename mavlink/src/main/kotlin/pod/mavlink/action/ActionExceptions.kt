@@ -98,3 +98,14 @@ public class NoSuchMissionItem(
         "vehicle $systemId holds $count mission items (0..${count - 1}): there is no item $item to start from"
     },
 )
+
+/**
+ * Vehicle [systemId] is disarmed on the ground, so there is nothing under way to [action]
+ * ("pause", "resume"); nothing was sent.
+ */
+public class NothingInFlight(
+    /** The vehicle's system id. */
+    public val systemId: Int,
+    /** What was asked. */
+    public val action: String,
+) : ActionException("vehicle $systemId is disarmed on the ground: there is no mission or goto in flight to $action")

@@ -228,13 +228,21 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
 
     /**
      * Lands: a multicopter where it is (NAV_LAND, confirmed by the LAND mode); an ArduPilot plane
-     * through its mission's landing sequence (DO_LAND_START, confirmed by AUTO). Returns when
-     * the landing has begun; [awaitLanded] waits for touchdown.
+     * through its mission's landing sequence (DO_LAND_START, confirmed by AUTO), or, when its
+     * mission has none, at home after the approach the mission executor plans ([PlaneLanding]:
+     * uploaded in place of the mission on board). Returns when the landing has begun;
+     * [awaitLanded] waits for touchdown.
      */
     public suspend fun land() {
         val (autopilot, type) = airframe()
         if (autopilot != Autopilot.PX4 && isPlane(type)) {
-            command(VehicleCommand(DO_LAND_START))
+            try {
+                command(VehicleCommand(DO_LAND_START))
+            } catch (e: CommandRejected) {
+                if (e.statusTexts.none { it.contains("No landing sequence", ignoreCase = true) }) throw e
+                PlaneLanding.plan(vehicle)
+                setMode(role(ModeRole.MISSION))
+            }
             confirmMode("land", ModeRole.MISSION)
         } else {
             command(VehicleCommand(NAV_LAND, param4 = Float.NaN, param5 = Double.NaN, param6 = Double.NaN))
@@ -254,6 +262,9 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
      * guided mode first. Returns once accepted; [awaitArrival] waits until it is there.
      */
     public suspend fun goto(target: Location, speed: Speed? = null) {
+        // Before the mode change: a disarmed ArduCopter would be left in GUIDED and then refuse
+        // the reposition with a bare FAILED.
+        requireArmed("fly to a point")
         val guided = role(ModeRole.GUIDED)
         if (airframe().first != Autopilot.PX4) setMode(guided)
         command(
@@ -291,9 +302,11 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
     /**
      * Pauses the mission where the vehicle is, holding position and altitude: with
      * DO_PAUSE_CONTINUE where the autopilot supports it (ArduCopter), by switching to the hold
-     * mode otherwise. [continueMission] resumes at the same item either way.
+     * mode otherwise. [continueMission] resumes at the same item either way. A vehicle disarmed on
+     * the ground has nothing to pause ([NothingInFlight], nothing sent).
      */
     public suspend fun pauseMission() {
+        if (!vehicle.telemetry.armed.value) throw NothingInFlight(vehicle.systemId, "pause")
         try {
             command(VehicleCommand(DO_PAUSE_CONTINUE, param1 = 0f))
             pausedByCommand = true
@@ -311,14 +324,22 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
     }
 
     /**
-     * Resumes a mission paused by [pauseMission] (or held in a hold mode) at the item it was on;
-     * after an upload that did not complete: [pod.mavlink.mission.MissionHalfWritten].
+     * Resumes what [pauseMission] paused, by this process or another: a mission at the item it was
+     * on, or an ArduCopter's goto in GUIDED, which flies on to its destination. An ArduCopter in
+     * AUTO or GUIDED is resumed with DO_PAUSE_CONTINUE (ModeAuto::resume, ModeGuided::resume in
+     * ArduCopter/mode_auto.cpp and mode_guided.cpp); a vehicle in a hold mode is switched to the
+     * mission mode. A vehicle disarmed on the ground has nothing to resume ([NothingInFlight],
+     * nothing sent: switching it to AUTO would leave it there). After an upload that did not
+     * complete: [pod.mavlink.mission.MissionHalfWritten].
      */
     public suspend fun continueMission() {
+        if (!vehicle.telemetry.armed.value) throw NothingInFlight(vehicle.systemId, "resume")
         vehicle.mission.requireWhole("resume the mission")
         val mission = role(ModeRole.MISSION)
-        val inMission = vehicle.telemetry.mode.value?.name == mission
-        if (pausedByCommand == true || (pausedByCommand == null && inMission)) {
+        val mode = vehicle.telemetry.mode.value?.name
+        val (autopilot, type) = airframe()
+        val pausedInMode = mode == mission || (autopilot == Autopilot.ARDUPILOT && type.isMultirotor && mode == role(ModeRole.GUIDED))
+        if (pausedByCommand == true || (pausedByCommand == null && pausedInMode)) {
             command(VehicleCommand(DO_PAUSE_CONTINUE, param1 = 1f))
         } else {
             setMode(mission)
@@ -332,9 +353,11 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
      * [VehicleDisarmed] before anything is sent; an ArduPilot copter's mission must begin with a
      * takeoff. [first] must be one of the vehicle's items ([NoSuchMissionItem]: the count is
      * downloaded first). ArduPilot refuses a start item in the command itself, so there the
-     * current item is set first. After an upload that did not complete: [pod.mavlink.mission.MissionHalfWritten].
+     * current item is set first. With [arm], a disarmed vehicle is armed ([arm]) once the mission
+     * on board is known to hold [first] (or any item to fly), never before, out of a mode it will not
+     * arm in ([armForFlight]). After an upload that did not complete: [pod.mavlink.mission.MissionHalfWritten].
      */
-    public suspend fun startMission(first: Int? = null) {
+    public suspend fun startMission(first: Int? = null, arm: Boolean = false) {
         require(first == null || first >= 0) { "first must be ≥ 0, was $first" }
         vehicle.mission.requireWhole("start the mission")
         val px4 = airframe().first == Autopilot.PX4
@@ -342,14 +365,18 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
         // (GCS_MAVLINK_Copter::handle_MAV_CMD_MISSION_START, ArduPlane's GCS_MAVLINK_Plane: set_mode
         // AUTO only), where the copter then refuses to arm ("Mode not armable"); PX4 arms itself
         // (Commander: VEHICLE_CMD_MISSION_START changes to AUTO_MISSION and calls arm()).
-        if (!px4) requireArmed("start the mission")
-        if (first != null) {
+        if (!px4 && !arm) requireArmed("start the mission")
+        if (first != null || arm) {
             // ArduPilot ignores MISSION_SET_CURRENT beyond its mission without a word
             // (GCS_MAVLINK::handle_mission_set_current answers only when set_current_cmd succeeds),
             // PX4 denies MISSION_START beyond seq_total: check against what the vehicle holds.
             val count = vehicle.mission.download().size
-            if (first >= count) throw NoSuchMissionItem(vehicle.systemId, if (count == 0) null else first, count)
+            // ArduPilot's item 0 is home: a mission to fly has more (ModeAuto::init: num_commands() > 1).
+            val empty = count <= (if (px4) 0 else 1)
+            if (first != null && first >= count) throw NoSuchMissionItem(vehicle.systemId, if (count == 0) null else first, count)
+            if (empty) throw NoSuchMissionItem(vehicle.systemId, null, count)
         }
+        if (arm) armForFlight()
         if (first != null && !px4) vehicle.mission.setCurrent(first)
         command(VehicleCommand(MISSION_START, param1 = if (px4 && first != null) first.toFloat() else 0f))
         confirmMode("start mission", ModeRole.MISSION)

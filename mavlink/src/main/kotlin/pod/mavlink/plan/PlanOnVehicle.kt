@@ -1,6 +1,9 @@
 package pod.mavlink.plan
 
+import pod.core.units.Location
 import pod.core.vehicle.Autopilot
+import pod.core.vehicle.VehicleType
+import pod.mavlink.MavlinkEnums
 import pod.mavlink.MavFrames
 import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionType
@@ -39,22 +42,48 @@ public object PlanOnVehicle {
     }
 
     /**
-     * The plan of the [mission], [fence] and [rally] lists downloaded from a vehicle of [autopilot]: on
-     * ArduPilot, item 0 becomes the planned home (AMSL) and the rest the mission from seq 0.
+     * The plan of the [mission], [fence] and [rally] lists downloaded from a vehicle of [autopilot] flying
+     * [type] (the file's firmwareType and vehicleType; null: unknown, written 0): on ArduPilot, item 0 becomes
+     * the planned home (AMSL) and the rest the mission from seq 0. Where item 0 does not hold a home (at
+     * 0°, 0°: ArduPilot has none yet) or the autopilot keeps none in its mission (PX4), the planned home is
+     * [home] (the vehicle's HOME_POSITION, AMSL), or none when that is unknown too. A yaw ArduPilot does
+     * not store comes back 0 and is written as unknown (NaN, QGC's null), not as north.
      *
      * @throws PlanListException when the fence or rally list does not describe a fence or rally points.
      */
-    public fun plan(mission: List<MissionItem>, fence: List<MissionItem>, rally: List<MissionItem>, autopilot: Autopilot): QgcPlan {
-        val home = mission.firstOrNull()?.takeIf { keepsHome(autopilot) }
+    public fun plan(
+        mission: List<MissionItem>,
+        fence: List<MissionItem>,
+        rally: List<MissionItem>,
+        autopilot: Autopilot,
+        type: VehicleType? = null,
+        home: Location? = null,
+    ): QgcPlan {
+        val homeItem = mission.firstOrNull()?.takeIf { keepsHome(autopilot) }
+        val items = if (homeItem == null) mission else mission.drop(1).map { it.copy(seq = it.seq - 1) }
         return QgcPlan(
-            mission = if (home == null) mission else mission.drop(1).map { it.copy(seq = it.seq - 1) },
+            mission = if (keepsHome(autopilot)) items.map(::unknownYaw) else items,
             geoFence = PlanLists.fence(fence),
             rallyPoints = PlanLists.rallyPoints(rally),
-            plannedHome = home?.let { PlanPosition(it.latitude, it.longitude, it.z.toDouble()) },
+            plannedHome = homeItem?.takeIf { it.x != 0 || it.y != 0 }?.let { PlanPosition(it.latitude, it.longitude, it.z.toDouble()) }
+                ?: home?.let { PlanPosition(it.latitude, it.longitude, it.altitude.meters) },
+            firmwareType = MavlinkEnums.mavAutopilot(autopilot),
+            vehicleType = type?.let(MavlinkEnums::mavType) ?: 0,
         )
     }
 
+    /**
+     * ArduPilot keeps no yaw for these commands (libraries/AP_Mission/AP_Mission.cpp,
+     * `mavlink_int_to_mission_cmd` stores only p1 for them; `mission_cmd_to_mavlink_int` sends param4 0
+     * back): a 0 there says nothing about the heading the plan asked for.
+     */
+    private fun unknownYaw(item: MissionItem): MissionItem =
+        if (item.command in YAW_NOT_KEPT && item.param4 == 0f) item.copy(param4 = Float.NaN) else item
+
     internal fun keepsHome(autopilot: Autopilot) = autopilot == Autopilot.ARDUPILOT
+
+    /** NAV_WAYPOINT, NAV_TAKEOFF, NAV_VTOL_TAKEOFF: the commands whose yaw may be sent NaN (`sanity_check_params`). */
+    private val YAW_NOT_KEPT = setOf(16, 22, 84)
 
     private const val NAV_WAYPOINT = 16
 }

@@ -14,7 +14,10 @@ import pod.mavlink.link.MavlinkLink
 import java.nio.file.Path
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.microseconds
+import kotlin.time.AbstractLongTimeSource
+import kotlin.time.DurationUnit
 import kotlin.time.TimeMark
+import kotlin.time.TimeSource
 
 /**
  * A tlog played back as a link: a [pod.mavlink.GroundStation] opened on it hears every recorded
@@ -44,6 +47,19 @@ public class TlogReplayLink private constructor(
     private val playing = CompletableDeferred<Unit>().apply { if (!paused) complete(Unit) }
     private var receiving = false
     private val _progress = MutableStateFlow(ReplayProgress())
+
+    /** Log time of the record played last, in microseconds from the first: what [logClock] reads. */
+    @Volatile private var playedMicros: Long = 0
+
+    /**
+     * The log's own time as a clock: how far into the log the replay has played (the record being
+     * delivered included). A station reading it ([pod.mavlink.GroundStationConfig.timebase])
+     * measures a vehicle's silence in log time, at any speed and however late this process plays a
+     * record: a pause of the replay is no silence of the vehicles.
+     */
+    public val logClock: TimeSource.WithComparableMarks = object : AbstractLongTimeSource(DurationUnit.MICROSECONDS) {
+        override fun read(): Long = playedMicros
+    }
 
     override val address: LinkAddress = LinkAddress.Replay(path.toString())
 
@@ -76,6 +92,7 @@ public class TlogReplayLink private constructor(
                 val wait = logTime / speed - start.elapsedNow()
                 if (wait.isPositive()) delay(wait)
                 if (closed) break
+                playedMicros = maxOf(playedMicros, logTime.inWholeMicroseconds)
                 onBytes(RECORDING, record.frame)
                 _progress.update { it.copy(records = it.records + 1, logTime = maxOf(it.logTime, logTime)) }
             }

@@ -41,6 +41,7 @@ import pod.mavlink.command.CommandResult.UNSUPPORTED
 internal class Commands(private val ap: SimAutopilot) {
     private var calibration: Calibration? = null
     private val orbit = OrbitCommand(ap)
+    private val pauseContinue = PauseContinue(ap)
 
     /** Lines explaining the command being handled, sent with its ack in the flavour's order. */
     private val explanations = ArrayList<SimOutput.Text>()
@@ -62,7 +63,7 @@ internal class Commands(private val ap: SimAutopilot) {
             DO_LAND_START -> landStart()
             DO_REPOSITION -> reposition(cmd)
             DO_ORBIT -> if (ap.isPx4) orbit.handle(cmd, ::refuse) { followUps += SimOutput.Text(Severity.CRITICAL, it) } else UNSUPPORTED
-            DO_PAUSE_CONTINUE -> pauseContinue(cmd)
+            DO_PAUSE_CONTINUE -> pauseContinue.handle(cmd, ::refuse)
             MISSION_START -> missionStart(cmd)
             DO_SET_MISSION_CURRENT -> setCurrent(cmd)
             DO_CHANGE_SPEED -> if (!ap.isPx4 && cmd.param2 <= 0f) DENIED else changeSpeed(cmd.param1.toInt(), cmd.param2.toDouble())
@@ -324,23 +325,6 @@ internal class Commands(private val ap: SimAutopilot) {
         }
         val radius = ap.guidedRadius.takeIf { it > 1.0 } ?: kotlin.math.abs(loiterRad)
         return Activity.GoTo(target, null, radius, clockwise, from = ap.body.location)
-    }
-
-    private fun pauseContinue(cmd: CommandRequest): CommandResult {
-        if (ap.isPx4 || !ap.multirotor) return UNSUPPORTED // PX4 and ArduPlane: switch to Hold / LOITER instead
-        return when (cmd.param1.toInt()) {
-            0 -> {
-                val ok = when (ap.activity) {
-                    Activity.Mission -> ap.mission.pause()
-                    is Activity.GoTo -> true.also { ap.activity = Activity.Hold(ap.body.location, 0.0) }
-                    is Activity.Hold -> ap.modeName == "GUIDED"
-                    else -> false
-                }
-                if (ok) ACCEPTED else FAILED.also { refuse("Failed to pause", Severity.INFO) }
-            }
-            1 -> if (ap.activity == Activity.Mission && ap.mission.resume()) ACCEPTED else FAILED.also { refuse("Failed to resume", Severity.INFO) }
-            else -> DENIED
-        }
     }
 
     private fun missionStart(cmd: CommandRequest): CommandResult {
