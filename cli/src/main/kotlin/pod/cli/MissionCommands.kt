@@ -226,7 +226,10 @@ internal class MissionDownload(out: Output) : MissionAction(out, "download") {
     }
 }
 
-/** How long `pod mission download FILE` waits for a PX4 vehicle's home to write as line 0 (then 0, 0, 0). */
+/**
+ * How long `pod mission download` waits for the vehicle's home (the station asked for it on
+ * discovery): a PX4 WPL file's line 0, a .plan's planned home (left out when none comes).
+ */
 private val HOME_WAIT = 5.seconds
 
 /** `pod mission clear`. */
@@ -241,6 +244,3 @@ internal class MissionClear(out: Output) : MissionAction(out, "clear") {
 
 /** "1 mission item", "25 fence items". */
 private fun items(count: Int, type: MissionType): String = "$count ${type.name.lowercase()} item" + if (count == 1) "" else "s"
-
-/** How long `download FILE.plan` waits for the vehicle's home, which the station asked for on discovery. */
-private val HOME_WAIT = 2.seconds
