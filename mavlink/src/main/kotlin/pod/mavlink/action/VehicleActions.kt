@@ -333,8 +333,8 @@ public class VehicleActions internal constructor(private val vehicle: MavlinkVeh
      * complete: [pod.mavlink.mission.MissionHalfWritten].
      */
     public suspend fun continueMission() {
-        if (!vehicle.telemetry.armed.value) throw NothingInFlight(vehicle.systemId, "resume")
         vehicle.mission.requireWhole("resume the mission")
+        if (!vehicle.telemetry.armed.value) throw NothingInFlight(vehicle.systemId, "resume")
         val mission = role(ModeRole.MISSION)
         val mode = vehicle.telemetry.mode.value?.name
         val (autopilot, type) = airframe()
