@@ -79,7 +79,13 @@ class MissionExecutorSpec : StringSpec({
                 val mission = if (flavor == SimFlavor.ARDUPLANE) planeCircuit(home) else copterSurvey(home)
                 val events = ArrayList<MissionEvent>()
                 withTimeout(1.hours) { fleet.fly(v, mission) { events += it } }
-                events shouldBe inOrder(mission.steps.size)
+                events.filter { it !is MissionEvent.Prepared } shouldBe inOrder(mission.steps.size)
+                // Got ready on the ground in the order it was done, and said so: the mode first, then armed.
+                events.filterIsInstance<MissionEvent.Prepared>().single().changes shouldBe when (flavor) {
+                    SimFlavor.ARDUCOPTER -> listOf("mode STABILIZE → GUIDED", "armed")
+                    SimFlavor.ARDUPLANE -> listOf("mode MANUAL → LOITER", "armed")
+                    else -> listOf("armed")
+                }
                 vehicle.telemetry.armed.value shouldBe false
                 vehicle.telemetry.landedState.value shouldBe LandedState.ON_GROUND
                 vehicle.telemetry.position.value!!.location.distanceTo(home).meters shouldBeLessThan (if (flavor == SimFlavor.ARDUPLANE) 100.0 else 3.0)
@@ -106,7 +112,7 @@ class MissionExecutorSpec : StringSpec({
                 val mission = Mission("loiter", null, listOf(MissionStep.TakeOff(home.at(0, 0, 15.0), 0.deg), MissionStep.Waypoint(home.at(30, 0, 15.0)), MissionStep.Loiter(end, 0.m, LoiterDuration.Unlimited)))
                 val events = ArrayList<MissionEvent>()
                 withTimeout(20.minutes) { fleet.flyUntilLoitering(v, mission) { events += it } }
-                events shouldBe inOrder(3).dropLast(2) + MissionEvent.Loitering(2)
+                events.filter { it !is MissionEvent.Prepared } shouldBe inOrder(3).dropLast(2) + MissionEvent.Loitering(2)
                 val p = vehicle.telemetry.position.value!!
                 p.location.distanceTo(end).meters shouldBeLessThan 3.0
                 abs(p.relativeAltitude.meters - 20.0) shouldBeLessThan 3.0

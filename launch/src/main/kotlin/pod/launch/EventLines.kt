@@ -26,6 +26,7 @@ public class EventLines(private val names: (Int) -> String) {
 
     private fun mission(name: String, event: MissionEvent): String? = when (event) {
         is MissionEvent.Uploaded -> "$name mission on board (${steps(event.steps)})"
+        is MissionEvent.Prepared -> "$name ready to fly: ${event.changes.joinToString(", ")}"
         MissionEvent.Started -> "$name started"
         is MissionEvent.StepStarted -> null
         is MissionEvent.StepDone -> "$name step ${event.step + 1} done"

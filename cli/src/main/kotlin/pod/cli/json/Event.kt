@@ -259,12 +259,13 @@ public sealed interface Event {
 
     /**
      * What [vehicle] reported while task [task] flew it: [what] is `uploaded` (with [steps], the
-     * mission's step count), `started`, `step_done` (with [step], the index of the step, from 0),
+     * mission's step count), `prepared` (on the ground, got ready to fly: [changes], "mode
+     * STABILIZE → GUIDED", "armed"), `started`, `step_done` (with [step], the index of the step, from 0),
      * `loitering` (established on the final unlimited loiter, step [step]; the mission then runs
      * until cancelled) or `completed`.
      */
     @Serializable @SerialName("mission")
-    public data class Mission(val at: Double, val task: Int, val vehicle: Int, val what: String, val step: Int?, val steps: Int?) : Event
+    public data class Mission(val at: Double, val task: Int, val vehicle: Int, val what: String, val step: Int?, val steps: Int?, val changes: List<String>? = null) : Event
 
     /** [vehicle] was put in [state] (`HOLD` or `RETURN_HOME`) after its task ended early; [confirmed] is false when it did not confirm. */
     @Serializable @SerialName("made_safe")

@@ -53,6 +53,7 @@ internal fun EngineEvent.toEvent(): Event? {
         is EngineEvent.Flying -> Event.Flying(at, task, vehicle, mission.name, mission.steps.size)
         is EngineEvent.Mission -> when (val e = event) {
             is MissionEvent.Uploaded -> Event.Mission(at, task, vehicle, "uploaded", step = null, steps = e.steps)
+            is MissionEvent.Prepared -> Event.Mission(at, task, vehicle, "prepared", step = null, steps = null, changes = e.changes)
             MissionEvent.Started -> Event.Mission(at, task, vehicle, "started", step = null, steps = null)
             is MissionEvent.StepStarted -> null
             is MissionEvent.StepDone -> Event.Mission(at, task, vehicle, "step_done", step = e.step, steps = null)

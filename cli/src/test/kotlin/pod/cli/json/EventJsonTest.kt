@@ -53,6 +53,7 @@ private val samples: List<Event> = listOf(
     Event.TaskCancelled(61.25, 5, "watch battery"),
     Event.Flying(2.0, 3, 1, "survey-1", 14),
     Event.Mission(30.0, 3, 1, "step_done", step = 4, steps = null),
+    Event.Mission(2.5, 3, 1, "prepared", step = null, steps = null, changes = listOf("mode STABILIZE → GUIDED", "armed")),
     Event.MadeSafe(62.0, 2, "RETURN_HOME", confirmed = false),
     Event.Picked(0.5, listOf(1, 2)),
     Event.Released(600.0, listOf(1)),
@@ -117,7 +118,9 @@ class EventJsonTest : StringSpec({
     "a mission event says what happened in fields, not as an object's toString" {
         val at = 61_250.milliseconds
         EventJson.encode(EngineEvent.Mission(at, task = 3, vehicle = 1, event = MissionEvent.StepDone(4)).toEvent()!!) shouldBe
-            """{"event":"mission","at":61.25,"task":3,"vehicle":1,"what":"step_done","step":4,"steps":null}"""
+            """{"event":"mission","at":61.25,"task":3,"vehicle":1,"what":"step_done","step":4,"steps":null,"changes":null}"""
+        EngineEvent.Mission(at, 3, 1, MissionEvent.Prepared(listOf("mode RTL → GUIDED", "armed"))).toEvent() shouldBe
+            Event.Mission(61.25, 3, 1, "prepared", null, null, changes = listOf("mode RTL → GUIDED", "armed"))
         EngineEvent.Mission(at, 3, 1, MissionEvent.Uploaded(14)).toEvent() shouldBe Event.Mission(61.25, 3, 1, "uploaded", null, 14)
         EngineEvent.Mission(at, 3, 1, MissionEvent.Started).toEvent() shouldBe Event.Mission(61.25, 3, 1, "started", null, null)
         EngineEvent.Mission(at, 3, 1, MissionEvent.Completed).toEvent() shouldBe Event.Mission(61.25, 3, 1, "completed", null, null)

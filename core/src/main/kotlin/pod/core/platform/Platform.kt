@@ -77,6 +77,12 @@ public sealed interface MissionEvent {
     /** The mission is on board the vehicle ([steps] mission steps). */
     public data class Uploaded(val steps: Int) : MissionEvent
 
+    /**
+     * The vehicle, on the ground, was got ready to fly it: [changes] in order, in words ("mode
+     * STABILIZE → GUIDED", "armed"), so that no mode change comes as a surprise.
+     */
+    public data class Prepared(val changes: List<String>) : MissionEvent
+
     /** The vehicle started flying it. */
     public data object Started : MissionEvent
 

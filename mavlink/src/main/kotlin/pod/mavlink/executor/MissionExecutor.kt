@@ -141,7 +141,10 @@ public class MissionExecutor(
                     Input.Vehicle(p, l, a, m?.name, c)
                 }.collect { inbox.send(it) }
             }
-            if (!airborne) vehicle.action.armForFlight(MissionReplacement.armingMode(identity, flavor, vehicle.telemetry.mode.value?.name))
+            if (!airborne) {
+                val changes = vehicle.action.armForFlight(MissionReplacement.armingMode(identity, flavor, vehicle.telemetry.mode.value?.name))
+                if (changes.isNotEmpty()) emit(MissionEvent.Prepared(changes))
+            }
             vehicle.action.startMission()
             emit(MissionEvent.Started)
             _state.value = MissionRunState.FLYING
