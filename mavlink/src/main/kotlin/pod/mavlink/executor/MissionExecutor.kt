@@ -142,7 +142,7 @@ public class MissionExecutor(
                 }.collect { inbox.send(it) }
             }
             if (!airborne) {
-                val changes = vehicle.action.armForFlight(MissionReplacement.armingMode(identity, flavor, vehicle.telemetry.mode.value?.name))
+                val changes = vehicle.action.armForFlight(MissionReplacement.armingMode(identity, flavor))
                 if (changes.isNotEmpty()) emit(MissionEvent.Prepared(changes))
             }
             vehicle.action.startMission()

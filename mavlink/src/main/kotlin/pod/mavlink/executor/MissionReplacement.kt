@@ -1,6 +1,5 @@
 package pod.mavlink.executor
 
-import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleIdentity
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.mission.MissionItem
@@ -41,14 +40,12 @@ internal object MissionReplacement {
      *   on its next loop (ModeAuto::update, "Aircraft in auto without a running mission"), which the
      *   last heartbeat may not show yet, and ModeRTL refuses arming (ModeRTL::_pre_arm_checks,
      *   "Arm: RTL mode not armable"); the hold mode arms and keeps the throttle idle on the ground;
-     * - PX4 leaves the modes it will not arm in (return, land) for its hold mode.
+     * - PX4 stays where it is (null): [pod.mavlink.action.VehicleActions.armForFlight] leaves the
+     *   modes it will not arm in (return, land, orbit) for its hold mode, as for any arming.
      */
-    fun armingMode(identity: VehicleIdentity, flavor: MissionFlavor, current: String?): String? = when {
-        flavor == MissionFlavor.ARDUCOPTER -> FlightModes.forRole(identity.autopilot, identity.type, ModeRole.GUIDED)
-        flavor == MissionFlavor.ARDUPLANE -> FlightModes.forRole(identity.autopilot, identity.type, ModeRole.HOLD)
-        identity.autopilot == Autopilot.PX4 && current in PX4_NOT_ARMABLE -> FlightModes.forRole(identity.autopilot, identity.type, ModeRole.HOLD)
+    fun armingMode(identity: VehicleIdentity, flavor: MissionFlavor): String? = when (flavor) {
+        MissionFlavor.ARDUCOPTER -> FlightModes.forRole(identity.autopilot, identity.type, ModeRole.GUIDED)
+        MissionFlavor.ARDUPLANE -> FlightModes.forRole(identity.autopilot, identity.type, ModeRole.HOLD)
         else -> null
     }
-
-    private val PX4_NOT_ARMABLE = setOf("AUTO.RTL", "AUTO.LAND")
 }
