@@ -38,6 +38,7 @@ import pod.mavlink.plan.MissionPlan
 import pod.mavlink.plan.MissionPlanner
 import pod.mavlink.telemetry.FlightModes
 import pod.mavlink.telemetry.ModeRole
+import pod.mavlink.telemetry.RecentNotices
 import pod.core.units.toReadable
 
 /**
@@ -178,7 +179,7 @@ public class MissionExecutor(
         var leftMission: TimeMark? = null
         // A failsafe says why before or as it switches mode (ArduPilot's fence: the text, then
         // the mode; PX4: "Failsafe activated"): the latest few lines, for the error.
-        val heard = ArrayDeque<Input.Text>()
+        val heard = RecentNotices()
 
         suspend fun carryOut(outputs: List<ProgressTracker.Output>) {
             for (out in outputs) when (out) {
@@ -210,14 +211,11 @@ public class MissionExecutor(
                 val remaining = timing.modeGrace - left.elapsedNow()
                 withTimeoutOrNull(remaining) { inbox.receive() } ?: throw MissionInterrupted(
                     mission.name, seen?.mode ?: "?", tracker.currentStep,
-                    said = heard.filter { it.at.elapsedNow() <= left.elapsedNow() + TEXTS_BEFORE_SWITCH }.map { it.text },
+                    said = heard.within(left.elapsedNow() + TEXTS_BEFORE_SWITCH),
                 )
             } ?: inbox.receive()
             when (input) {
-                is Input.Text -> {
-                    heard.addLast(input)
-                    while (heard.size > TEXTS_KEPT) heard.removeFirst()
-                }
+                is Input.Text -> heard.add(input.text, input.at)
                 is Input.Current -> carryOut(tracker.onCurrent(input.seq))
                 is Input.Reached -> carryOut(tracker.onReached(input.seq))
                 is Input.Vehicle -> {
@@ -239,7 +237,7 @@ public class MissionExecutor(
             seen?.let { v ->
                 // Down and disarmed short of completion: a crash, a landing short, someone's disarm.
                 if (airborneSeen && !v.armed && !isAirborne(v.landed, v.position?.relativeAltitude, false)) {
-                    throw MissionDisarmed(mission.name, tracker.currentStep, heard.filter { it.at.elapsedNow() <= TEXTS_BEFORE_SWITCH }.map { it.text })
+                    throw MissionDisarmed(mission.name, tracker.currentStep, heard.within(TEXTS_BEFORE_SWITCH))
                 }
             }
             val outOfMission = seen?.mode != null && seen?.mode != missionMode && !tracker.allDone
@@ -264,9 +262,6 @@ public class MissionExecutor(
     private val during: String get() = "mission \"${mission.name}\""
 
     private companion object {
-        /** How many of the vehicle's latest notices are kept for a [MissionInterrupted]. */
-        const val TEXTS_KEPT = 8
-
         /** How long before the switch a notice may come and still be its reason. */
         val TEXTS_BEFORE_SWITCH = 3.seconds
     }

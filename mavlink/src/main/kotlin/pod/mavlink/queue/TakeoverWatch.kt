@@ -1,7 +1,6 @@
 package pod.mavlink.queue
 
 import kotlin.time.Duration.Companion.seconds
-import kotlin.time.TimeMark
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.combine
 import kotlinx.coroutines.flow.first
@@ -10,6 +9,7 @@ import pod.core.PodException
 import pod.core.platform.AutopilotTookControl
 import pod.core.vehicle.Severity
 import pod.mavlink.MavlinkVehicle
+import pod.mavlink.telemetry.RecentNotices
 
 /**
  * Watches a flight Pod steers in modes of its own choosing (the guided mode, its hold, a landing
@@ -26,25 +26,17 @@ internal class TakeoverWatch(private val vehicle: MavlinkVehicle, initial: Set<S
 
     /** Returns only by throwing [QueueInterrupted] once the vehicle is armed in a mode not [allowed]. */
     suspend fun watch(): Nothing = coroutineScope {
-        val heard = ArrayDeque<Pair<String, TimeMark>>()
-        val listening = launch {
-            vehicle.statusTexts.collect {
-                if (it.severity <= Severity.NOTICE) synchronized(heard) {
-                    heard.addLast(it.text to vehicle.clock.markNow())
-                    while (heard.size > TEXTS_KEPT) heard.removeFirst()
-                }
-            }
-        }
+        val heard = RecentNotices()
+        val listening = launch { vehicle.statusTexts.collect { if (it.severity <= Severity.NOTICE) heard.add(it.text, vehicle.clock.markNow()) } }
         val modes = combine(vehicle.telemetry.mode, vehicle.telemetry.armed) { m, armed -> m?.name?.takeIf { armed } }
         modes.first { it != null && it in allowed }
         val mode = modes.first { it != null && it !in allowed }!!
         listening.cancel()
-        val said = synchronized(heard) { heard.filter { it.second.elapsedNow() <= TEXTS_BEFORE }.map { it.first } }
-        throw QueueInterrupted(vehicle.systemId, mode, said)
+        throw QueueInterrupted(vehicle.systemId, mode, heard.within(TEXTS_BEFORE))
     }
 
     private companion object {
-        const val TEXTS_KEPT = 8
+        /** How long before the switch a notice may come and still be its reason. */
         val TEXTS_BEFORE = 3.seconds
     }
 }
