@@ -58,13 +58,19 @@ internal class VirtualFleet(
 
     private val listening: MutableSet<Int> = ConcurrentHashMap.newKeySet()
 
+    /**
+     * Every datagram offered towards a listening link, as "virtual-ms hex-bytes", in the order
+     * sent (before faults): what the vehicles said, for golden traces of their behaviour.
+     */
+    val towardsGround: MutableList<String> = java.util.Collections.synchronizedList(ArrayList())
+
     private val routes = FaultConditions.byDirection(seed, up, down) { it in listening }
     private val models: MutableList<Pair<Boolean, FaultConditions>> = java.util.Collections.synchronizedList(ArrayList())
 
     /** The in-memory network everything talks over. */
     val network = MemoryNetwork(test.backgroundScope, timebase) { from, to ->
         val faults = routes(from, to)?.also { models += (to.port in listening) to it }
-        if (to.port !in listening) faults else Withholding(withheld, faults)
+        if (to.port !in listening) faults else Withholding(withheld, faults, towardsGround)
     }
 
     /** What the faults did so far to datagrams towards the ground ([towardsGround]) or away from it, summed over routes. */
@@ -175,8 +181,17 @@ internal fun virtualRun(
 }
 
 /** Drops every datagram that carries one of the message ids [withheld] and passes the rest to [faults]. */
-private class Withholding(private val withheld: Set<Int>, private val faults: LinkConditions?) : LinkConditions {
-    override fun offer(bytes: ByteArray, now: Duration): List<TimedDatagram> = when {
+private class Withholding(
+    private val withheld: Set<Int>,
+    private val faults: LinkConditions?,
+    private val record: MutableList<String>,
+) : LinkConditions {
+    override fun offer(bytes: ByteArray, now: Duration): List<TimedDatagram> {
+        record += "${now.inWholeMicroseconds} ${bytes.joinToString("") { "%02x".format(it) }}"
+        return pass(bytes, now)
+    }
+
+    private fun pass(bytes: ByteArray, now: Duration): List<TimedDatagram> = when {
         messageId(bytes) in withheld -> emptyList()
         faults == null -> listOf(TimedDatagram(now, bytes))
         else -> faults.offer(bytes, now)
