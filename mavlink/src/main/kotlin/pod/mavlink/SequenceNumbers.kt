@@ -4,11 +4,11 @@ import java.util.concurrent.ConcurrentHashMap
 import java.util.concurrent.atomic.AtomicInteger
 
 /** Outgoing packet sequence numbers, one 0..255 counter per (system id, component id) we send as. */
-public class SequenceNumbers {
+internal class SequenceNumbers {
     private val counters = ConcurrentHashMap<Int, AtomicInteger>()
 
     /** The next sequence number for frames sent as ([systemId], [componentId]). */
-    public fun next(systemId: Int, componentId: Int): Int =
+    fun next(systemId: Int, componentId: Int): Int =
         counters.computeIfAbsent((systemId shl 8) or componentId) { AtomicInteger() }.getAndIncrement() and 0xFF
 }
 

@@ -1,26 +1,19 @@
 package pod.sim
 
-import pod.mavlink.MavFrames
-import pod.mavlink.command.MavCommands
 import pod.mavlink.command.CommandResult
-import pod.mavlink.MessageIds
 import io.dronefleet.mavlink.common.CommandInt
 import io.dronefleet.mavlink.common.CommandLong
 import io.dronefleet.mavlink.common.ParamRequestList
 import io.dronefleet.mavlink.common.ParamRequestRead
 import io.dronefleet.mavlink.common.ParamSet
 import io.dronefleet.mavlink.common.SetMode
-import kotlin.math.roundToLong
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.Duration.Companion.nanoseconds
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.DurationUnit
 import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.ExperimentalCoroutinesApi
-import kotlinx.coroutines.Job
-import kotlinx.coroutines.NonCancellable
 import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.cancel
 import kotlinx.coroutines.channels.BufferOverflow
@@ -35,11 +28,7 @@ import kotlinx.coroutines.flow.asSharedFlow
 import kotlinx.coroutines.flow.asStateFlow
 import kotlinx.coroutines.job
 import kotlinx.coroutines.launch
-import kotlinx.coroutines.withContext
-import pod.mavlink.MessageTargets
-import pod.mavlink.SequenceNumbers
 import pod.mavlink.codec.FrameDecoder
-import pod.mavlink.codec.FrameEncoder
 import pod.mavlink.codec.MavFrame
 import pod.mavlink.codec.MessageCodec
 import pod.mavlink.command.MavCommands.REQUEST_MESSAGE
@@ -47,11 +36,14 @@ import pod.mavlink.command.MavCommands.SET_MESSAGE_INTERVAL
 import pod.core.time.Timebase
 import pod.mavlink.link.LinkAddress
 import pod.mavlink.link.MavlinkLink
-import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionMessage
-import pod.mavlink.mission.MissionServer
-import pod.mavlink.mission.MissionServerFlavor
-import pod.mavlink.mission.MissionWire
+import pod.mavlink.mission.MissionType
+import pod.mavlink.vehicle.Asker
+import pod.mavlink.vehicle.MissionFrames
+import pod.mavlink.vehicle.MissionServer
+import pod.mavlink.vehicle.Serving
+import pod.mavlink.vehicle.VehicleEncoder
+import pod.mavlink.vehicle.serve
 import pod.sim.autopilot.CommandRequest
 import pod.sim.autopilot.SimAutopilot
 import pod.sim.autopilot.SimOutput
@@ -79,29 +71,20 @@ public class SimVehicle(
     /** Opens the vehicle's link to [SimVehicleConfig.gcs]: UDP sockets by default. */
     private val openLink: LinkOpener = LinkOpener.Udp,
 ) {
-    private val encoder = FrameEncoder(codec)
+    private val encoder = VehicleEncoder(codec, config.systemId, config.componentId)
     private val bootedAt = timebase.clock.markNow()
     private val messages = SimMessages(config, bootedAt)
-    private val sequences = SequenceNumbers()
     private val _state: MutableStateFlow<SimState>
-    private val rates = MutableStateFlow(config.streamRates)
-    private val streams = HashMap<Int, Job>()
     private var scope: CoroutineScope? = null
-    private var missionTimer: Job? = null
-    private var missionTimerAt: Long? = null
-    private var missionPeer: Pair<Int, Int>? = null
+
+    /** The mission protocol served while running: its timer lives in the running scope. */
+    private var missions: Serving<MissionMessage, MissionMessage>? = null
 
     /**
      * The vehicle side of the mission protocol: missions, fences and rally points, with the
      * behaviour of the configured autopilot. Its lists survive [stop] and [start], like storage.
      */
-    public val missionServer: MissionServer = MissionServer(
-        if (config.autopilot == pod.core.vehicle.Autopilot.PX4) MissionServerFlavor.PX4 else MissionServerFlavor.ARDUPILOT,
-        fixedWing = config.type == pod.core.vehicle.VehicleType.FIXED_WING,
-    ).apply {
-        // The mission server's clock is wall time since boot (clockNanos); the config speaks simulated time.
-        storageReadyAt = (config.missionStorageReadyAfter / config.timeScale).inWholeNanoseconds
-    }
+    public val missionServer: MissionServer = VehicleMissions.server(config) { autopilot }
 
     /** The simulated autopilot; everything touching it runs on the vehicle's single-threaded dispatcher. */
     internal val autopilot = SimAutopilot(
@@ -121,8 +104,17 @@ public class SimVehicle(
             autopilot.params.set(name, value)
         }
         _state = MutableStateFlow(autopilot.state())
-        messages.missionTotal = { missionServer.list(pod.mavlink.mission.MissionType.MISSION).size }
+        messages.missionTotal = { missionServer.list(MissionType.MISSION).size }
     }
+
+    /** HEARTBEAT and the telemetry streams, from the configured (by default the firmware's) rates. */
+    private val streams = StreamScheduler(
+        config.streamRates, config.timeScale,
+        heartbeat = { messages.heartbeat(autopilot.state()) },
+        build = { id -> messages.build(id, autopilot.state()) },
+        canBuild = messages::canBuild,
+        send = ::send,
+    )
 
     /** Photos the simulated camera took, oldest first. */
     public val photos: StateFlow<List<PhotoEvent>> = _photos.asStateFlow()
@@ -146,7 +138,7 @@ public class SimVehicle(
     public val state: StateFlow<SimState> = _state.asStateFlow()
 
     /** Message id → rate in Hz of what it streams now, as configured or as a ground station asked. */
-    public val streamRates: StateFlow<Map<Int, Double>> = rates.asStateFlow()
+    public val streamRates: StateFlow<Map<Int, Double>> = streams.rates
 
     /** The local UDP port the vehicle sends from, or null when stopped. */
     public val localPort: Int? get() = link?.localPort
@@ -168,10 +160,10 @@ public class SimVehicle(
         )
         this.link = link
         this.scope = scope
+        missions = scope.serve(VehicleMissions(autopilot), bootedAt) { reply, to -> send(MissionFrames.write(reply, to)) }
         scope.launch { receive(link) }
         scope.launch { physics() }
-        scope.launch { every(sendPeriod(1.0)) { send(messages.heartbeat(autopilot.state())) } }
-        for ((id, hz) in rates.value) restartStream(scope, id, hz)
+        streams.start(scope)
     }
 
     /** Stops sending and closes the socket; the ground station will see the vehicle fall silent. */
@@ -180,7 +172,8 @@ public class SimVehicle(
         link?.close()
         scope = null
         link = null
-        streams.clear()
+        missions = null
+        streams.stop()
     }
 
     /**
@@ -225,14 +218,6 @@ public class SimVehicle(
         }
     }
 
-    private fun restartStream(scope: CoroutineScope, messageId: Int, hz: Double) {
-        streams.remove(messageId)?.cancel()
-        if (hz <= 0) return
-        streams[messageId] = scope.launch(CoroutineName("stream-$messageId")) {
-            every(sendPeriod(hz)) { messages.build(messageId, autopilot.state())?.let { send(it) } }
-        }
-    }
-
     private suspend fun receive(link: MavlinkLink) = coroutineScope {
         val decoder = FrameDecoder(codec)
         // The link hands bytes over synchronously; replies need to suspend, so they go through an inbox.
@@ -246,10 +231,9 @@ public class SimVehicle(
 
     @Suppress("DEPRECATION") // SET_MODE is deprecated but ground stations still send it
     internal suspend fun handle(frame: MavFrame, message: Any) {
-        val target = MessageTargets.targetSystem(message)
-        val mission = MissionWire.decode(message)
-        if (mission != null && (target == null || target == 0 || target == config.systemId)) {
-            serveMission(frame, mission)
+        val mission = MissionFrames.read(message, config.systemId)
+        if (mission != null) {
+            missions?.receive(mission, Asker(frame.systemId, frame.componentId))
             flush()
             return
         }
@@ -290,7 +274,7 @@ public class SimVehicle(
     /** Message-level commands are answered here; everything else is the autopilot's. */
     private suspend fun command(cmd: CommandRequest) {
         val result = when (cmd.command) {
-            SET_MESSAGE_INTERVAL -> setInterval(cmd.param1.toInt(), cmd.param2)
+            SET_MESSAGE_INTERVAL -> streams.setInterval(cmd.param1.toInt(), cmd.param2)
             REQUEST_MESSAGE -> requestMessage(cmd.param1.toInt())
             else -> return autopilot.commands.handle(cmd)
         }
@@ -303,101 +287,16 @@ public class SimVehicle(
         return CommandResult.ACCEPTED
     }
 
-    private fun setInterval(messageId: Int, intervalUs: Float): CommandResult {
-        if (messageId == MessageIds.HEARTBEAT || messages.canBuild(messageId).not()) return CommandResult.DENIED
-        val hz = when {
-            intervalUs < 0 -> 0.0 // -1 disables the stream
-            intervalUs == 0f -> config.streamRates[messageId] ?: 1.0 // 0 restores the default
-            else -> 1_000_000.0 / intervalUs
-        }
-        if (hz > 1000) return CommandResult.DENIED
-        rates.value = rates.value + (messageId to hz)
-        scope?.let { restartStream(it, messageId, hz) }
-        return CommandResult.ACCEPTED
-    }
-
-    /** Hands a mission-protocol message to the mission server and sends its replies to the asker. */
-    private suspend fun serveMission(frame: MavFrame, message: MissionMessage) {
-        missionServer.home = homeItem(autopilot.home)
-        val replies = autopilot.onMissionMessage(message, clockNanos())
-        for (reply in replies) send(MissionWire.encode(reply, frame.systemId, frame.componentId))
-        missionPeer = frame.systemId to frame.componentId
-        scheduleMissionTimer()
-    }
-
-    /**
-     * Keeps one timer at the mission server's next deadline. A deadline that did not change keeps
-     * its timer: re-arming on every incoming message could cancel a timer in the middle of sending
-     * its re-request, and a ground station that keeps talking would then never hear one.
-     */
-    private fun scheduleMissionTimer() {
-        val at = missionServer.nextTimeoutAt
-        if (at == missionTimerAt && missionTimer?.isActive == true) return
-        missionTimer?.cancel()
-        missionTimerAt = at
-        if (at == null) return
-        val scope = scope ?: return
-        missionTimer = scope.launch {
-            delay((at - clockNanos()).coerceAtLeast(0).nanoseconds)
-            val (system, component) = missionPeer ?: return@launch
-            withContext(NonCancellable) {
-                val replies = missionServer.onTimeout(clockNanos())
-                for (reply in replies) send(MissionWire.encode(reply, system, component))
-            }
-            missionTimerAt = null
-            scheduleMissionTimer()
-        }
-    }
-
-    private fun homeItem(home: pod.core.units.Location): MissionItem = home.let { home ->
-        MissionItem(
-            seq = 0, frame = MavFrames.GLOBAL, command = MavCommands.NAV_WAYPOINT,
-            x = (home.latitude * 1e7).roundToLong().toInt(), y = (home.longitude * 1e7).roundToLong().toInt(),
-            z = home.altitude.meters.toFloat(),
-        )
-    }
-
-    private fun clockNanos(): Long = bootedAt.elapsedNow().inWholeNanoseconds
-
     private fun addressedToUs(system: Int, component: Int): Boolean =
         (system == 0 || system == config.systemId) && (component == 0 || component == config.componentId)
 
     private suspend fun send(message: Any) {
         val link = link ?: return
-        link.sendToAll(encoder.encode(message, config.systemId, config.componentId, sequences.next(config.systemId, config.componentId)))
-    }
-
-    /**
-     * The wall-clock period of what the vehicle sends [hz] times per second of its own time. A
-     * simulated autopilot runs on its simulated clock, as ArduPilot SITL does (AP_HAL::micros64()
-     * and millis64() return the scheduler's stopped_clock_usec(), the simulation's time, so every
-     * scheduled send follows it: libraries/AP_HAL_SITL/system.cpp): at time scale 40 a 1 Hz
-     * HEARTBEAT comes every 25 ms, and a confirmation that waits for the next heartbeat costs a
-     * simulated second, not forty. A vehicle slower than real time keeps real-time rates (a ground
-     * station must not take it for lost), and no stream is sent more often than every
-     * [MIN_SEND_PERIOD] of wall time, which bounds the datagrams a fast fleet sends.
-     */
-    private fun sendPeriod(hz: Double): Duration = sendPeriod(hz, config.timeScale)
-
-    private suspend inline fun every(period: Duration, action: () -> Unit): Nothing {
-        while (true) {
-            action()
-            delay(period)
-        }
+        link.sendToAll(encoder.encode(message))
     }
 
     internal companion object {
         val TICK = 20.milliseconds
         const val MAX_STEPS_PER_TICK = 2000
-
-        /** With a time scale above 1, at most 50 sends a second per stream (see [sendPeriod]). */
-        val MIN_SEND_PERIOD = 20.milliseconds
-
-        /** The wall-clock period of a [hz] stream of a vehicle whose clock runs [timeScale] times real time. */
-        fun sendPeriod(hz: Double, timeScale: Double): Duration {
-            val real = (1.0 / hz).seconds
-            if (timeScale <= 1.0) return real
-            return (real / timeScale).coerceAtLeast(minOf(real, MIN_SEND_PERIOD))
-        }
     }
 }

@@ -6,8 +6,8 @@ import io.kotest.matchers.shouldBe
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleType
 import pod.mavlink.codec.FrameEncoder
-import pod.mavlink.mission.MissionServer
-import pod.mavlink.mission.MissionServerFlavor
+import pod.mavlink.vehicle.MissionServer
+import pod.mavlink.vehicle.MissionServerFlavor
 import pod.sim.autopilot.SimAutopilot
 import pod.sim.autopilot.SimOutput
 import kotlin.time.TimeSource

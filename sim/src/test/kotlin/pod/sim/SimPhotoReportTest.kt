@@ -9,8 +9,8 @@ import io.kotest.matchers.types.shouldBeInstanceOf
 import pod.core.units.m
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleType
-import pod.mavlink.mission.MissionServer
-import pod.mavlink.mission.MissionServerFlavor
+import pod.mavlink.vehicle.MissionServer
+import pod.mavlink.vehicle.MissionServerFlavor
 import pod.sim.autopilot.SimAutopilot
 import pod.sim.autopilot.SimOutput
 import pod.sim.world.SimObject

@@ -35,7 +35,7 @@ import pod.mavlink.command.MavCommands.NAV_WAYPOINT
  * - commands without a location come back in frame 0 with x, y and z 0;
  * - altitudes are kept in whole centimetres, frames reduced to MSL (0), relative (3) or terrain (10);
  * - fence and rally items come back with autocontinue 0 (they are kept as points, not commands);
- * - item 0 of a mission is the vehicle's home (see [MissionServer.home]).
+ * - item 0 of a mission is the vehicle's home (see [pod.mavlink.vehicle.MissionServer.home]).
  *
  * Derived from ArduPilot's libraries/AP_Mission/AP_Mission.cpp: `mavlink_int_to_mission_cmd`
  * (what is stored), `mission_cmd_to_mavlink_int` (what is sent back, with every param defaulting

@@ -18,12 +18,15 @@ import io.dronefleet.mavlink.common.MissionWritePartialList
 import io.dronefleet.mavlink.util.EnumValue
 import pod.mavlink.command.MavCommands.DO_DIGICAM_CONTROL
 
-/** Translates [MissionMessage]s to io.dronefleet messages addressed to one system, and back. */
-public object MissionWire {
+/**
+ * Translates [MissionMessage]s to io.dronefleet messages addressed to one system, and back: for
+ * the ground side's [MissionService] and the vehicle side's [pod.mavlink.vehicle.MissionFrames].
+ */
+internal object MissionWire {
 
     /** The MAVLink message for [message], addressed to ([targetSystem], [targetComponent]). */
     @Suppress("DEPRECATION") // MISSION_REQUEST and MISSION_SET_CURRENT are deprecated but still spoken
-    public fun encode(message: MissionMessage, targetSystem: Int, targetComponent: Int): Any = when (message) {
+    fun encode(message: MissionMessage, targetSystem: Int, targetComponent: Int): Any = when (message) {
         is MissionMessage.Count -> MissionCount.builder().targetSystem(targetSystem).targetComponent(targetComponent)
             .count(message.count).missionType(type(message.type)).build()
         is MissionMessage.RequestList -> MissionRequestList.builder().targetSystem(targetSystem).targetComponent(targetComponent)
@@ -58,7 +61,7 @@ public object MissionWire {
      * message or names a mission type or result this dialect does not define.
      */
     @Suppress("DEPRECATION")
-    public fun decode(message: Any): MissionMessage? = when (message) {
+    fun decode(message: Any): MissionMessage? = when (message) {
         is MissionCount -> type(message.missionType())?.let { MissionMessage.Count(it, message.count()) }
         is MissionRequestList -> type(message.missionType())?.let { MissionMessage.RequestList(it) }
         is MissionRequestInt -> type(message.missionType())?.let { MissionMessage.Request(it, message.seq()) }

@@ -25,35 +25,51 @@ internal interface ProtocolMachine<in I, out O, out T> {
  * What a [ProtocolMachine] wants after an event: [send] these messages, in order; wake it at
  * [wakeAt] (the driver's clock, nanoseconds; [KEEP] leaves the timer as it was, [NEVER] stops it);
  * and, once it is over, its [outcome].
+ *
+ * Public because the vehicle side speaks the same contract: a
+ * [pod.mavlink.vehicle.VehicleMachine] (a simulator's mission server) answers with steps too, and
+ * the simulator that wraps one passes them on.
  */
-internal class Step<out O, out T>(
-    val send: List<O> = emptyList(),
-    val wakeAt: Long = KEEP,
-    val outcome: Outcome<T>? = null,
+public class Step<out O, out T>(
+    /** The messages to send, in order. */
+    public val send: List<O> = emptyList(),
+    /** When to wake the machine next: a clock reading in nanoseconds, [KEEP] or [NEVER]. */
+    public val wakeAt: Long = KEEP,
+    /** How the exchange ended, or null while it goes on (always null on the vehicle side). */
+    public val outcome: Outcome<T>? = null,
 ) {
     override fun toString(): String = "Step(send=$send, wakeAt=$wakeAt, outcome=$outcome)"
 
-    companion object {
+    /** The timer values and the steps every machine uses. */
+    public companion object {
         /** Leave the timer as it is. */
-        const val KEEP = -1L
+        public const val KEEP: Long = -1L
 
         /** No timer. */
-        const val NEVER = Long.MAX_VALUE
+        public const val NEVER: Long = Long.MAX_VALUE
 
         /** Nothing to do, timer unchanged. */
-        val NOTHING = Step<Nothing, Nothing>()
+        public val NOTHING: Step<Nothing, Nothing> = Step()
 
         /** The exchange ended with [value]. */
-        fun <O, T> done(value: T, send: List<O> = emptyList()): Step<O, T> = Step(send, NEVER, Outcome.Done(value))
+        internal fun <O, T> done(value: T, send: List<O> = emptyList()): Step<O, T> = Step(send, NEVER, Outcome.Done(value))
 
         /** The exchange ended with [error]. */
-        fun failed(error: PodException): Step<Nothing, Nothing> = Step(wakeAt = NEVER, outcome = Outcome.Failed(error))
+        internal fun failed(error: PodException): Step<Nothing, Nothing> = Step(wakeAt = NEVER, outcome = Outcome.Failed(error))
     }
 }
 
 /** How an exchange ended: with a result, or with the typed error its caller sees. */
-internal sealed interface Outcome<out T> {
-    data class Done<out T>(val value: T) : Outcome<T>
+public sealed interface Outcome<out T> {
+    /** It ended with [value]. */
+    public data class Done<out T>(
+        /** The exchange's result. */
+        public val value: T,
+    ) : Outcome<T>
 
-    data class Failed(val error: PodException) : Outcome<Nothing>
+    /** It ended with [error]. */
+    public data class Failed(
+        /** What the caller is thrown. */
+        public val error: PodException,
+    ) : Outcome<Nothing>
 }

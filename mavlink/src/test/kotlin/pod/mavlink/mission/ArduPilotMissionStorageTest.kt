@@ -12,6 +12,8 @@ import io.kotest.property.arbitrary.int
 import io.kotest.property.arbitrary.long
 import io.kotest.property.checkAll
 import kotlinx.coroutines.test.runTest
+import pod.mavlink.vehicle.MissionServer
+import pod.mavlink.vehicle.MissionServerFlavor
 import kotlin.random.Random
 
 private const val LAT = 411_780_460
@@ -33,7 +35,7 @@ class ArduPilotMissionStorageTest : StringSpec({
 
     "an ArduPilot vehicle gives back its own form of a mission, as measured on ArduCopter 4.7 SITL" {
         val home = MissionItem(0, 0, 16, x = LAT, y = LON, z = 120.456f)
-        val server = MissionServer(MissionServerFlavor.ARDUPILOT).apply { this.home = home }
+        val server = MissionServer(MissionServerFlavor.ARDUPILOT, home = { home })
         val sent = listOf(
             MissionItem(0, 3, 16, x = 1, y = 2, z = 5f),
             // A yaw of NaN ("keep heading") and an acceptance radius of 5 m: a copter keeps neither.
@@ -100,7 +102,7 @@ class ArduPilotMissionStorageTest : StringSpec({
     "an upload over a lossy link into an ArduPilot vehicle whose final ack is lost is confirmed by comparing what it keeps" {
         for (seed in 1L..20L) {
             val items = randomItems(MissionType.MISSION, 30, Random(seed))
-            val server = MissionServer(MissionServerFlavor.ARDUPILOT).apply { home = MissionItem(0, 0, 16, x = LAT, y = LON, z = 100f) }
+            val server = MissionServer(MissionServerFlavor.ARDUPILOT, home = { MissionItem(0, 0, 16, x = LAT, y = LON, z = 100f) })
             val faults = Faults(drop = 0.1, minDelayMs = 5, maxDelayMs = 30)
             // Every ACCEPTED is lost, and so is every answer to a repeated last item: only a download can tell.
             val lose = { message: MissionMessage, toVehicle: Boolean -> !toVehicle && message is MissionMessage.Ack }

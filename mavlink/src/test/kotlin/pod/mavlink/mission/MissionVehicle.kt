@@ -10,8 +10,6 @@ import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
-import kotlinx.coroutines.selects.onTimeout
-import kotlinx.coroutines.selects.select
 import kotlinx.coroutines.test.TestScope
 import pod.core.time.Timebase
 import pod.mavlink.virtualTimebase
@@ -25,11 +23,14 @@ import pod.mavlink.link.LinkConditions
 import pod.mavlink.link.MavlinkLink
 import pod.mavlink.link.MemoryNetwork
 import pod.mavlink.link.TimedDatagram
+import pod.mavlink.vehicle.Asker
+import pod.mavlink.vehicle.MissionServer
+import pod.mavlink.vehicle.MissionServerFlavor
+import pod.mavlink.vehicle.serve
 import kotlin.random.Random
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.hours
 import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.Duration.Companion.nanoseconds
 import kotlin.time.Duration.Companion.seconds
 
 /** What goes wrong on one direction of the test link: probabilities, and a delay range in milliseconds. */
@@ -68,7 +69,7 @@ internal class SeededConditions(
 /**
  * A vehicle on a [MemoryNetwork] whose mission protocol is the real [MissionServer]: it
  * heartbeats as [autopilot] (by default the server's flavour), decodes what the station sends,
- * answers as the server says, and runs the server's re-request timer on the test clock.
+ * and [serve]s the server on the test clock (its answers and its re-request timer).
  */
 internal class MissionVehicle(
     val server: MissionServer,
@@ -78,10 +79,9 @@ internal class MissionVehicle(
 ) {
     private val encoder = FrameEncoder()
     private val decoder = FrameDecoder()
-    private val inbox = Channel<Pair<MissionMessage, Pair<Int, Int>>>(Channel.UNLIMITED)
+    private val inbox = Channel<Pair<MissionMessage, Asker>>(Channel.UNLIMITED)
     private val origin = timebase.clock.markNow()
     private var sequence = 0
-    private var station = 255 to 190
 
     /** Nanoseconds on the vehicle's clock, as the server counts them. */
     fun now(): Long = origin.elapsedNow().inWholeNanoseconds
@@ -92,7 +92,7 @@ internal class MissionVehicle(
             link.receive { _, bytes ->
                 decoder.feed(bytes) { frame ->
                     val message = MessageCodec.Default.decode(frame) ?: return@feed
-                    MissionWire.decode(message)?.let { inbox.trySend(it to (frame.systemId to frame.componentId)) }
+                    MissionWire.decode(message)?.let { inbox.trySend(it to Asker(frame.systemId, frame.componentId)) }
                 }
             }
         }
@@ -104,18 +104,9 @@ internal class MissionVehicle(
                 delay(1.seconds)
             }
         }
+        val serving = scope.serve(server, origin) { answer, to -> send(MissionWire.encode(answer, to.systemId, to.componentId)) }
         scope.launch {
-            while (true) {
-                val at = server.nextTimeoutAt
-                val answers = select {
-                    inbox.onReceive { (message, from) ->
-                        station = from
-                        server.onMessage(message, now())
-                    }
-                    if (at != null) onTimeout((at - now()).coerceAtLeast(0).nanoseconds) { server.onTimeout(now()) }
-                }
-                for (answer in answers) send(MissionWire.encode(answer, station.first, station.second))
-            }
+            for ((message, from) in inbox) serving.receive(message, from)
         }
     }
 
@@ -126,9 +117,9 @@ internal class MissionVehicle(
     suspend fun settle(limit: Duration = 60.seconds): Boolean {
         val until = now() + limit.inWholeNanoseconds
         while (now() < until) {
-            if (server.nextTimeoutAt == null && inbox.isEmpty) {
+            if (!server.uploading && inbox.isEmpty) {
                 delay(1.seconds) // anything still on the way arrives meanwhile
-                if (server.nextTimeoutAt == null && inbox.isEmpty) return true
+                if (!server.uploading && inbox.isEmpty) return true
             } else {
                 delay(100.milliseconds)
             }

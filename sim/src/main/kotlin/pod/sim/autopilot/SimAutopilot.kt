@@ -6,9 +6,10 @@ import pod.core.vehicle.Autopilot
 import pod.core.vehicle.LandedState
 import pod.core.vehicle.VehicleType
 import pod.mavlink.mission.MissionMessage
-import pod.mavlink.mission.MissionServer
 import pod.mavlink.mission.MissionType
+import pod.mavlink.protocol.Step
 import pod.mavlink.telemetry.FlightModes
+import pod.mavlink.vehicle.MissionServer
 import pod.sim.PhotoEvent
 import pod.sim.SimState
 import pod.sim.flight.Airframe
@@ -89,11 +90,12 @@ internal class SimAutopilot(
     val reached = ArrayList<Int>()
     val photos = ArrayList<PhotoEvent>()
 
-    init {
-        // ArduPilot will not clear a mission it is flying: AP_Mission::clear refuses while armed and
-        // MISSION_RUNNING (in AUTO), and MissionItemProtocol::handle_mission_clear_all answers ERROR.
-        if (!isPx4) missionServer.clearAllowed = { type -> type != MissionType.MISSION || !(armed && modeName == "AUTO" && mission.running) }
-    }
+    /**
+     * Whether a ground station may clear [type]'s list now (the [missionServer]'s `clearAllowed`).
+     * ArduPilot will not clear a mission it is flying: AP_Mission::clear refuses while armed and
+     * MISSION_RUNNING (in AUTO), and MissionItemProtocol::handle_mission_clear_all answers ERROR.
+     */
+    fun allowsClearing(type: MissionType): Boolean = isPx4 || type != MissionType.MISSION || !(armed && modeName == "AUTO" && mission.running)
 
     /**
      * True once the simulated GPS has a fix and the estimator has set its origin. ArduPilot has no
@@ -139,7 +141,7 @@ internal class SimAutopilot(
 
     /**
      * Hands a mission-protocol message from a ground station to the mission server at [now] (the
-     * server's clock) and returns its replies, reacting to the list as it is afterwards
+     * server's clock) and returns its step (replies, wake time), reacting to the list as it is afterwards
      * ([missionChanged]). MISSION_SET_CURRENT while an ArduPilot vehicle flies its mission restarts
      * the item named, even the one it is flying: AP_Mission::set_current_cmd stops the current nav
      * command and advance_current_nav_cmd reads the item from storage again, at once, in the
@@ -147,7 +149,7 @@ internal class SimAutopilot(
      * rewritten active item has "no effect until the command is restarted". So an upload that
      * rewrote the item being flown takes effect with it.
      */
-    fun onMissionMessage(message: MissionMessage, now: Long): List<MissionMessage> {
+    fun onMissionMessage(message: MissionMessage, now: Long): Step<MissionMessage, Nothing> {
         val replies = missionServer.onMessage(message, now)
         missionChanged()
         if (message is MissionMessage.SetCurrent && !isPx4 && activity == Activity.Mission) mission.restart()

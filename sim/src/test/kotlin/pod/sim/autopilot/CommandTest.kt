@@ -12,8 +12,8 @@ import pod.core.units.m
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.LandedState
 import pod.core.vehicle.VehicleType
-import pod.mavlink.mission.MissionServer
-import pod.mavlink.mission.MissionServerFlavor
+import pod.mavlink.vehicle.MissionServer
+import pod.mavlink.vehicle.MissionServerFlavor
 import pod.sim.flight.horizontalDistance
 import kotlin.math.roundToLong
 

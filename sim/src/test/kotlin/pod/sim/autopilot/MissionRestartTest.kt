@@ -68,7 +68,7 @@ class MissionRestartTest : StringSpec({
         ap.run(1.0)
         near(ap.target(), old) shouldBe true // AP_Mission::replace_cmd: no effect until the command is restarted
 
-        ap.onMissionMessage(MissionMessage.SetCurrent(2), 0).single() shouldBe MissionMessage.Current(2, 5)
+        ap.onMissionMessage(MissionMessage.SetCurrent(2), 0).send.single() shouldBe MissionMessage.Current(2, 5)
         near(ap.target(), new) shouldBe true // in the handler, before any physics step
         ap.state().missionCurrent shouldBe 2
         val before = horizontalDistance(ap.body.location, new)

@@ -11,8 +11,8 @@ import pod.core.units.m
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleType
 import pod.mavlink.command.CommandResult
-import pod.mavlink.mission.MissionServer
-import pod.mavlink.mission.MissionServerFlavor
+import pod.mavlink.vehicle.MissionServer
+import pod.mavlink.vehicle.MissionServerFlavor
 import pod.sim.PhotoEvent
 import pod.sim.SimDetections
 import pod.sim.SimMessages

@@ -69,7 +69,7 @@ class PlaneMissionTest : StringSpec({
         val ap = plane()
         ap.load(listOf(homeItem(), item(22, alt = 40.0), item(16, 600.0, 0.0, 40.0)))
         ap.mode("AUTO") shouldBe CommandResult.ACCEPTED
-        ap.missionServer.onMessage(MissionMessage.ClearAll(MissionType.MISSION), 0) shouldBe listOf(MissionMessage.Ack(MissionType.MISSION, MissionResult.ACCEPTED))
+        ap.missionServer.onMessage(MissionMessage.ClearAll(MissionType.MISSION), 0).send shouldBe listOf(MissionMessage.Ack(MissionType.MISSION, MissionResult.ACCEPTED))
         ap.drain()
         ap.step(DT)
         ap.modeName shouldBe "RTL"
@@ -88,10 +88,10 @@ class PlaneMissionTest : StringSpec({
         ap.command(CommandRequest(300))
         ap.runUntil(120.0) { it.body.location.altitude.meters > HOME.altitude.meters + 30.0 }
         val clear = MissionMessage.ClearAll(MissionType.MISSION)
-        ap.missionServer.onMessage(clear, 0) shouldBe listOf(MissionMessage.Ack(MissionType.MISSION, MissionResult.ERROR))
+        ap.missionServer.onMessage(clear, 0).send shouldBe listOf(MissionMessage.Ack(MissionType.MISSION, MissionResult.ERROR))
         ap.missionServer.list(MissionType.MISSION).size shouldBe 4
         ap.mode("LOITER") shouldBe CommandResult.ACCEPTED
-        ap.missionServer.onMessage(clear, 0) shouldBe listOf(MissionMessage.Ack(MissionType.MISSION, MissionResult.ACCEPTED))
+        ap.missionServer.onMessage(clear, 0).send shouldBe listOf(MissionMessage.Ack(MissionType.MISSION, MissionResult.ACCEPTED))
         (ap.body.location.altitude.meters - HOME.altitude.meters) shouldBeGreaterThan 30.0
     }
 })

@@ -13,8 +13,8 @@ import pod.core.vehicle.LandedState
 import pod.core.vehicle.VehicleType
 import pod.mavlink.MessageIds
 import pod.mavlink.command.CommandResult
-import pod.mavlink.mission.MissionServer
-import pod.mavlink.mission.MissionServerFlavor
+import pod.mavlink.vehicle.MissionServer
+import pod.mavlink.vehicle.MissionServerFlavor
 import pod.sim.SimMessages
 import pod.sim.SimVehicleConfig
 import pod.sim.world.Hill

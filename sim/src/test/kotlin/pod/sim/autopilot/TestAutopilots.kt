@@ -7,8 +7,8 @@ import pod.core.units.m
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleType
 import pod.mavlink.mission.MissionItem
-import pod.mavlink.mission.MissionServer
-import pod.mavlink.mission.MissionServerFlavor
+import pod.mavlink.vehicle.MissionServer
+import pod.mavlink.vehicle.MissionServerFlavor
 import pod.mavlink.mission.MissionType
 import pod.sim.SimVehicleConfig
 import kotlin.math.roundToLong
@@ -16,12 +16,15 @@ import kotlin.math.roundToLong
 internal val HOME: Location = SimVehicleConfig.DEFAULT_HOME
 
 /** A simulated autopilot of the given flavour at [HOME], with its GPS ready after 2 s. */
-internal fun autopilot(autopilot: Autopilot = Autopilot.ARDUPILOT, type: VehicleType = VehicleType.QUADROTOR, charge: Double = 1.0): SimAutopilot =
-    SimAutopilot(
+internal fun autopilot(autopilot: Autopilot = Autopilot.ARDUPILOT, type: VehicleType = VehicleType.QUADROTOR, charge: Double = 1.0): SimAutopilot {
+    lateinit var ap: SimAutopilot
+    ap = SimAutopilot(
         autopilot, type, 1, HOME, charge,
-        MissionServer(if (autopilot == Autopilot.PX4) MissionServerFlavor.PX4 else MissionServerFlavor.ARDUPILOT),
+        MissionServer(if (autopilot == Autopilot.PX4) MissionServerFlavor.PX4 else MissionServerFlavor.ARDUPILOT, clearAllowed = { ap.allowsClearing(it) }),
         readyAfter = 2.0,
     )
+    return ap
+}
 
 internal const val DT = 0.05
 

@@ -1,33 +1,20 @@
-package pod.mavlink.mission
+package pod.mavlink.vehicle
 
+import pod.mavlink.mission.ArduPilotMissionStorage
+import pod.mavlink.mission.MissionItem
+import pod.mavlink.mission.MissionMessage
+import pod.mavlink.mission.MissionResult
+import pod.mavlink.mission.MissionType
+import pod.mavlink.protocol.Step
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 
-/** How a [MissionServer] behaves where ArduPilot and PX4 differ. */
-public enum class MissionServerFlavor {
-    /**
-     * Requests items with the legacy MISSION_REQUEST, answers an unexpected item with a non-final
-     * MISSION_ACK INVALID_SEQUENCE, re-requests after 1 s and gives up after 8 s with
-     * OPERATION_CANCELLED, overwrites item 0 of a MISSION with home, answers a repeated last item
-     * after completion with ERROR, supports MISSION_WRITE_PARTIAL_LIST, and stores items in its
-     * own form ([ArduPilotMissionStorage]).
-     */
-    ARDUPILOT,
-
-    /**
-     * Requests with MISSION_REQUEST_INT, ignores unexpected items, re-requests after 250 ms and
-     * gives up silently after 5 s, keeps item 0, acknowledges a repeated last item again, ignores
-     * partial writes, and serves downloads strictly in order (an out-of-turn request ends the
-     * download with ERROR; 5 s without a request drop it silently).
-     */
-    PX4,
-}
-
 /**
- * Vehicle side of the mission protocol for all three lists, as a pure state machine: feed it the
- * ground station's messages and the clock (nanoseconds, any origin), send what it returns, and
- * call [onTimeout] when [nextTimeoutAt] passes.
+ * Vehicle side of the mission protocol for all three lists, as a pure [VehicleMachine]: feed it
+ * the ground station's messages and its timer's expiries with the clock (nanoseconds, any origin),
+ * send what each [Step] says and wake it when the step asks ([serve] does all three). Its timer
+ * re-requests an upload's awaited item and abandons an upload left silent.
  *
  * The ArduPilot flavour writes each MISSION item into the list as it arrives, as ArduPilot does
  * (MissionItemProtocol::handle_mission_item → MissionItemProtocol_Waypoints::replace_item /
@@ -48,45 +35,51 @@ public class MissionServer(
     rerequest: Duration? = null,
     /** ArduPlane rather than ArduCopter: decides what an ArduPilot-flavoured NAV_WAYPOINT keeps (see [ArduPilotMissionStorage]). */
     public val fixedWing: Boolean = false,
-) {
-    private val rerequestNanos = (rerequest ?: if (flavor == MissionServerFlavor.ARDUPILOT) 1.seconds else 250.milliseconds).inWholeNanoseconds
-    private val giveUpNanos = (if (flavor == MissionServerFlavor.ARDUPILOT) 8.seconds else 5.seconds).inWholeNanoseconds
-    private val lists = HashMap<MissionType, List<MissionItem>>()
-    private var upload: Upload? = null
-    private var completed: Pair<MissionType, Int>? = null // type and last seq of the latest completed upload
-    private var sending: Pair<MissionType, Int>? = null // PX4: the list being downloaded and the next seq it expects
-    private var sendingActivity = 0L // PX4: when the download last heard from the ground station
-
-    private class Upload(val type: MissionType, val base: List<MissionItem>, val start: Int, val end: Int, var expected: Int, var lastActivity: Long) {
-        val buffer = base.toMutableList()
-    }
-
     /**
      * Until this time (same clock as the inputs) the ArduPilot flavour answers MISSION_COUNT with
      * MAV_MISSION_NO_SPACE, as ArduPilot does right after boot: MissionItemProtocol::handle_mission_count
      * refuses a count above `max_items()`, which is AP_Mission::num_commands_max(), 0 until the
      * mission library has initialised its storage.
      */
-    public var storageReadyAt: Long = Long.MIN_VALUE
-
-    /** Home, written over item 0 of an uploaded MISSION by the ArduPilot flavour. */
-    public var home: MissionItem? = null
-
+    private val storageReadyAt: Long = Long.MIN_VALUE,
+    /**
+     * The vehicle's home as an item, read when the ArduPilot flavour writes it over item 0 of an
+     * uploaded MISSION; null while there is none. A function, since home moves as the vehicle lives.
+     */
+    home: () -> MissionItem? = { null },
     /**
      * Whether the vehicle lets [MissionMessage.ClearAll] empty a list now; a refusal is answered
-     * MISSION_ACK ERROR. The vehicle sets it: ArduPilot refuses to clear a mission it is flying
-     * (MissionItemProtocol::handle_mission_clear_all answers ERROR when AP_Mission::clear refuses
-     * a MISSION_RUNNING mission while armed).
+     * MISSION_ACK ERROR. The vehicle decides from its state: ArduPilot refuses to clear a mission
+     * it is flying (MissionItemProtocol::handle_mission_clear_all answers ERROR when AP_Mission::clear
+     * refuses a MISSION_RUNNING mission while armed).
      */
-    public var clearAllowed: (MissionType) -> Boolean = { true }
+    private val clearAllowed: (MissionType) -> Boolean = { true },
+) : VehicleMachine<MissionMessage, MissionMessage> {
+    private val rerequestNanos = (rerequest ?: if (flavor == MissionServerFlavor.ARDUPILOT) 1.seconds else 250.milliseconds).inWholeNanoseconds
+    private val giveUpNanos = (if (flavor == MissionServerFlavor.ARDUPILOT) 8.seconds else 5.seconds).inWholeNanoseconds
+    private val homeItem = home
+    private val lists = HashMap<MissionType, List<MissionItem>>()
+    private var upload: Upload? = null
+    private var completed: Pair<MissionType, Int>? = null // type and last seq of the latest completed upload
+    private var sending: Pair<MissionType, Int>? = null // PX4: the list being downloaded and the next seq it expects
+    private var sendingActivity = 0L // PX4: when the download last heard from the ground station
+
+    /** When the timer should wake the server next (same clock as the inputs); [Step.NEVER] when no upload is going. */
+    private var wakeAt = Step.NEVER
+
+    private class Upload(val type: MissionType, val base: List<MissionItem>, val start: Int, val end: Int, var expected: Int, var lastActivity: Long) {
+        val buffer = base.toMutableList()
+    }
+
+    /** Home as the ArduPilot flavour writes it over item 0 (see the constructor's `home`). */
+    public val home: MissionItem? get() = homeItem()
 
     /** The item being executed in the MISSION list. */
     public var current: Int = 0
         private set
 
-    /** When [onTimeout] should be called next (same clock as the inputs), or null when idle. */
-    public var nextTimeoutAt: Long? = null
-        private set
+    /** Whether an upload (or partial write) is going: the server's timer runs meanwhile. */
+    public val uploading: Boolean get() = upload != null
 
     /** What the vehicle holds in [type]'s list. */
     public fun list(type: MissionType): List<MissionItem> = lists[type].orEmpty()
@@ -96,8 +89,13 @@ public class MissionServer(
         lists[type] = items.mapIndexed { i, item -> item.copy(seq = i, missionType = type) }
     }
 
-    /** Handles one message from the ground station at time [now]; returns the replies. */
-    public fun onMessage(message: MissionMessage, now: Long): List<MissionMessage> = when (message) {
+    /** Handles one message from the ground station at time [now]: the replies, and when to wake the server. */
+    override fun onMessage(message: MissionMessage, now: Long): Step<MissionMessage, Nothing> = Step(answer(message, now), wakeAt)
+
+    /** Re-requests the expected item, or abandons an upload that has been silent too long. */
+    override fun onTimer(now: Long): Step<MissionMessage, Nothing> = Step(timeout(now), wakeAt)
+
+    private fun answer(message: MissionMessage, now: Long): List<MissionMessage> = when (message) {
         is MissionMessage.Count -> onCount(message.type, message.count, now)
         is MissionMessage.WritePartial -> onWritePartial(message, now)
         is MissionMessage.Item -> onItem(message.item, now)
@@ -138,21 +136,20 @@ public class MissionServer(
         is MissionMessage.Current -> emptyList()
     }
 
-    /** Re-requests the expected item, or abandons an upload that has been silent too long. */
-    public fun onTimeout(now: Long): List<MissionMessage> {
+    private fun timeout(now: Long): List<MissionMessage> {
         val up = upload ?: return emptyList()
         if (now - up.lastActivity >= giveUpNanos) {
             idle()
             return if (flavor == MissionServerFlavor.ARDUPILOT) listOf(MissionMessage.Ack(up.type, MissionResult.OPERATION_CANCELLED)) else emptyList()
         }
-        nextTimeoutAt = now + rerequestNanos
+        wakeAt = now + rerequestNanos
         return listOf(request(up))
     }
 
     private fun onCount(type: MissionType, count: Int, now: Long): List<MissionMessage> {
         val up = upload
         if (up != null && up.type == type && flavor == MissionServerFlavor.PX4 && up.expected == 0) {
-            nextTimeoutAt = now + rerequestNanos
+            wakeAt = now + rerequestNanos
             return listOf(request(up)) // PX4: a repeated count before item 0 is a lost request's echo
         }
         if (up != null && up.type != type) return deny(type)
@@ -177,7 +174,7 @@ public class MissionServer(
     /** Writes [item] into its list at once, replacing or appending, as ArduPilot's AP_Mission does. */
     private fun store(item: MissionItem) {
         val items = list(item.missionType).toMutableList()
-        val home = home
+        val home = homeItem()
         val kept = if (item.seq == 0 && home != null) home.copy(seq = 0, missionType = MissionType.MISSION) else item.copy(current = false)
         val stored = ArduPilotMissionStorage.stored(kept, fixedWing)
         if (item.seq < items.size) items[item.seq] = stored else items += stored
@@ -197,7 +194,7 @@ public class MissionServer(
     private fun begin(up: Upload, now: Long): List<MissionMessage> {
         upload = up
         completed = null
-        nextTimeoutAt = now + rerequestNanos
+        wakeAt = now + rerequestNanos
         return listOf(request(up))
     }
 
@@ -214,7 +211,7 @@ public class MissionServer(
         if (item.seq != up.expected) {
             return if (flavor == MissionServerFlavor.ARDUPILOT) listOf(MissionMessage.Ack(up.type, MissionResult.INVALID_SEQUENCE)) else emptyList()
         }
-        val problem = problemWith(item)
+        val problem = StoredItemChecks.problemWith(item, flavor)
         if (problem != null) {
             idle()
             return listOf(MissionMessage.Ack(up.type, problem))
@@ -224,7 +221,7 @@ public class MissionServer(
         up.lastActivity = now
         if (up.expected < up.end) {
             up.expected++
-            nextTimeoutAt = now + rerequestNanos
+            wakeAt = now + rerequestNanos
             return listOf(request(up))
         }
         commit(up)
@@ -268,7 +265,7 @@ public class MissionServer(
             // ArduPilot keeps its own packed form of each item, not what was sent.
             items = items.mapIndexed { i, item -> if (i in up.start..up.end) ArduPilotMissionStorage.stored(item, fixedWing) else item }
         }
-        val home = home
+        val home = homeItem()
         if (flavor == MissionServerFlavor.ARDUPILOT && up.type == MissionType.MISSION && home != null && items.isNotEmpty()) {
             // AP_Mission::write_home_to_storage: a NAV_WAYPOINT at home, kept like any other item.
             items = listOf(ArduPilotMissionStorage.stored(home.copy(seq = 0, missionType = MissionType.MISSION), fixedWing)) + items.drop(1)
@@ -279,40 +276,6 @@ public class MissionServer(
         idle()
     }
 
-    /** The MAV_MISSION_RESULT a real autopilot would answer to [item], or null when it is acceptable. */
-    private fun problemWith(item: MissionItem): MissionResult? =
-        (if (flavor == MissionServerFlavor.ARDUPILOT) ArduPilotMissionStorage.problem(item) else null) ?: commonProblemWith(item)
-
-    private fun commonProblemWith(item: MissionItem): MissionResult? = when (item.missionType) {
-        MissionType.MISSION -> when {
-            item.frame !in MissionItem.GLOBAL_FRAMES && item.frame != MissionItem.FRAME_MISSION && item.frame !in MissionItem.LOCAL_FRAMES -> MissionResult.UNSUPPORTED_FRAME
-            else -> coordinateProblem(item)
-        }
-        MissionType.FENCE -> when {
-            item.command !in 5000..5004 -> MissionResult.UNSUPPORTED
-            !item.isGlobal -> MissionResult.UNSUPPORTED_FRAME
-            else -> coordinateProblem(item)
-        }
-        MissionType.RALLY -> when {
-            item.command != 5100 -> MissionResult.UNSUPPORTED
-            !item.isGlobal -> MissionResult.UNSUPPORTED_FRAME
-            else -> coordinateProblem(item)
-        }
-    } ?: when {
-        item.param1.isNaN() -> MissionResult.INVALID_PARAM1
-        item.param2.isNaN() -> MissionResult.INVALID_PARAM2
-        item.param3.isNaN() -> MissionResult.INVALID_PARAM3
-        !item.z.isFinite() -> MissionResult.INVALID_PARAM7
-        else -> null
-    }
-
-    private fun coordinateProblem(item: MissionItem): MissionResult? = when {
-        !item.isGlobal -> null
-        item.x !in -900_000_000..900_000_000 -> MissionResult.INVALID_PARAM5_X
-        item.y !in -1_800_000_000..1_800_000_000 -> MissionResult.INVALID_PARAM6_Y
-        else -> null
-    }
-
     private fun busy(type: MissionType): Boolean = upload?.type == type
 
     private fun deny(type: MissionType) = listOf(MissionMessage.Ack(type, MissionResult.DENIED))
@@ -321,7 +284,7 @@ public class MissionServer(
 
     private fun idle() {
         upload = null
-        nextTimeoutAt = null
+        wakeAt = Step.NEVER
     }
 
     private fun placeholder(type: MissionType, seq: Int) = MissionItem(seq = seq, frame = MissionItem.FRAME_MISSION, command = 0, missionType = type)
