@@ -33,6 +33,8 @@ internal class VehicleMissions(private val autopilot: SimAutopilot) : VehicleMac
          * cleared come from the [autopilot] as it is when a message asks.
          */
         fun server(config: SimVehicleConfig, autopilot: () -> SimAutopilot): MissionServer = MissionServer(
+            // The firmware's mission protocol and storage form: mavlink's server knows both flavours,
+            // so this is the one place the vehicle side picks one (an autopilot profile can supply it).
             if (config.autopilot == Autopilot.PX4) MissionServerFlavor.PX4 else MissionServerFlavor.ARDUPILOT,
             fixedWing = config.type == VehicleType.FIXED_WING,
             storageReadyAt = (config.missionStorageReadyAfter / config.timeScale).inWholeNanoseconds,
