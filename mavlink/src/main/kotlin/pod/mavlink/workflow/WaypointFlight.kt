@@ -71,7 +71,7 @@ public class WaypointFlight(
         control: FlightControl? = null,
     ): List<WaypointRecord<R>> = coroutineScope {
         require(waypoints.isNotEmpty()) { "give at least one waypoint" }
-        val queue = MissionQueue(vehicle.clock, timeScale)
+        val queue = MissionQueue(vehicle.station.config.timebase, timeScale)
         val flight = async { QueueFlight(vehicle, queue, config).fly(WhenEmpty.WAIT) }
         // Written by the correction's collector, read by this loop: thread-safe holders.
         val offset = MutableStateFlow(Distance.ZERO)
