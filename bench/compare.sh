@@ -7,14 +7,14 @@
 # and the Python peers installed in this one (tools/python-peers.sh).
 #
 #   bench/compare.sh /work/wt-before /work/wt-recv [ingest|command|mission ...]
-set -u
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+. "$(dirname "${BASH_SOURCE[0]}")/preamble.sh"
+# Every part runs even when one fails: a comparison with a hole in it still says something.
+set +e +o pipefail
 before=$1; after=$2; shift 2
 parts=("${@:-ingest command mission}"); parts=(${parts[@]})
 out="$root/bench/target/results/compare"; mkdir -p "$out"
 py="$root/.venv/bin/python"
-load() { cut -d' ' -f1-3 /proc/loadavg; }
-"$root/bench/machine-info.sh"
+machine_info
 for part in "${parts[@]}"; do
   for dir in "$before" "$after"; do
     side=$(basename "$dir")

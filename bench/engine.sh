@@ -11,24 +11,17 @@
 #   bench/engine.sh           the full run: 10 warm-up and 30 measured repetitions per case; about 1 minute on 2 cores
 #   bench/engine.sh --quick   a smoke run with 2 + 3 repetitions (figures not meaningful)
 # Any further option goes to the harness (a later option wins), e.g. --leaves 100000 or --cases deep --depth 10000.
-set -euo pipefail
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-cd "$root"
+. "$(dirname "${BASH_SOURCE[0]}")/preamble.sh"
 
-settings=(--warmup 10 --reps 30)
-if [ "${1:-}" = "--quick" ]; then settings=(--warmup 2 --reps 3); shift; fi
+if $quick; then settings=(--warmup 2 --reps 3); else settings=(--warmup 10 --reps 30); fi
 
-results="$root/bench/target/results"
-bench/machine-info.sh
+machine_info
 
-echo "== build"
-./mvnw -B -ntp -o -Dkotlin.compiler.daemon=false -Pbench -pl bench -am package -DskipTests
-mkdir -p "$results"
-cp="$root/bench/target/pod-bench-0.1.0-SNAPSHOT.jar:$root/bench/target/lib/*"
+build_bench
 
 echo "== engine overhead"
 # Other work on this machine shows in the figures: say how busy it was.
-echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "load average before: $(load)"
 {
   for variant in "" "--events true" "--yield true"; do
     # shellcheck disable=SC2086 # the variant is two words on purpose
@@ -37,4 +30,4 @@ echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
     echo
   done
 } | tee "$results/engine.txt"
-echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "load average after: $(load)"

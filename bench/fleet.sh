@@ -6,23 +6,18 @@
 #   bench/fleet.sh                  10 minutes measured after 30 s of warm-up (the BENCHMARKS.md figure)
 #   bench/fleet.sh --quick          a 1-minute smoke run (figures not meaningful)
 #   bench/fleet.sh --duration 3m    any other option goes to pod.bench.fleet.FleetBenchKt
-set -euo pipefail
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-cd "$root"
+. "$(dirname "${BASH_SOURCE[0]}")/preamble.sh"
 
-settings=(--vehicles 250 --senders 3 --duration 10m --warmup 30s --command-every 50ms)
-if [ "${1:-}" = "--quick" ]; then settings=(--vehicles 250 --senders 3 --duration 45s --warmup 10s --command-every 50ms); shift; fi
-
-results="$root/bench/target/results"
-bench/machine-info.sh 2>/dev/null || true
-if [ "${SKIP_BUILD:-}" != "1" ]; then
-  echo "== build"
-  ./mvnw -B -ntp -o -Dkotlin.compiler.daemon=false -Pbench -pl bench -am package -DskipTests
+if $quick; then
+  settings=(--vehicles 250 --senders 3 --duration 45s --warmup 10s --command-every 50ms)
+else
+  settings=(--vehicles 250 --senders 3 --duration 10m --warmup 30s --command-every 50ms)
 fi
-mkdir -p "$results"
-cp="$root/bench/target/pod-bench-0.1.0-SNAPSHOT.jar:$root/bench/target/lib/*"
+
+machine_info
+build_bench
 echo "== fleet scale"
-echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "load average before: $(load)"
 timeout 1800 java -Xms512m -Xmx512m -cp "$cp" pod.bench.fleet.FleetBenchKt "${settings[@]}" \
   --json "$results/fleet.json" "$@" | tee "$results/fleet.md"
-echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "load average after: $(load)"

@@ -12,12 +12,7 @@
 #   bench/mission.sh --quick                      a 3-minute smoke run: PX4, 10 and 100 items, 0 and 30 % loss, 3 seeded runs
 # ArduPilot is left out by default: with it the run takes about 40 minutes, most of it in runs at
 # 30 % loss, where an upload into ArduPilot waits on the vehicle's own 1 s re-request timer.
-set -euo pipefail
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-cd "$root"
-
-quick=false
-if [ "${1:-}" = "--quick" ]; then quick=true; shift; fi
+. "$(dirname "${BASH_SOURCE[0]}")/preamble.sh"
 
 if $quick; then
   settings=(--sizes 10,100 --losses 0,30 --flavours PX4 --success-runs 3 --floor-warmup 200 --floor-samples 500)
@@ -25,18 +20,11 @@ else
   settings=(--sizes 10,100,1000 --losses 0,10,30 --flavours PX4 --success-runs 20 --floor-warmup 500 --floor-samples 2000)
 fi
 
-results="$root/bench/target/results"
-echo "== machine"
-echo "cores: $(nproc); CPU: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//'); memory: $(free -g | awk '/^Mem:/ {print $2 " GiB"}')"
-echo "JDK: $(java -version 2>&1 | head -2 | tail -1)"
-echo "OS: $(. /etc/os-release 2>/dev/null && echo "$PRETTY_NAME"), kernel $(uname -r)"
+machine_info
 
-echo "== build"
-./mvnw -B -ntp -Pbench -pl bench -am package -DskipTests
-mkdir -p "$results"
+build_bench
 # Stale default results go, unless options were given (they may name other files, next to these).
 if [ $# -eq 0 ]; then rm -f "$results/mission.json" "$results/mission.md" "$results/mission-mavsdk-stderr.log"; fi
-cp="$root/bench/target/pod-bench-0.1.0-SNAPSHOT.jar:$root/bench/target/lib/*"
 
 echo "== Python peers (MAVSDK 4.1)"
 tools/python-peers.sh

@@ -9,12 +9,7 @@
 #   bench/queue.sh              the full run: N = 10 and 100, loopback, 100 ms RTT, 100 ms RTT + 20 % loss; ~16 minutes
 #   bench/queue.sh --quick      a 1-minute smoke run: N = 10, loopback and 100 ms RTT, 3 changes each
 #   any other option goes to the harness (a later option wins), e.g. --conditions LOOPBACK,RTT100
-set -euo pipefail
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-cd "$root"
-
-quick=false
-if [ "${1:-}" = "--quick" ]; then quick=true; shift; fi
+. "$(dirname "${BASH_SOURCE[0]}")/preamble.sh"
 
 if $quick; then
   settings=(--sizes 10 --conditions LOOPBACK,RTT100 --reps 3 --warmup 1)
@@ -22,13 +17,9 @@ else
   settings=(--sizes 10,100 --conditions LOOPBACK,RTT100,RTT100_LOSS20 --reps 30 --warmup 5 --lossy-reps 10)
 fi
 
-results="$root/bench/target/results"
-bench/machine-info.sh
+machine_info
 
-echo "== build"
-./mvnw -B -ntp -Pbench -pl bench -am package -DskipTests
-mkdir -p "$results"
-cp="$root/bench/target/pod-bench-0.1.0-SNAPSHOT.jar:$root/bench/target/lib/*"
+build_bench
 
 echo "== queue change latency"
 # Every change is bounded inside the harness (60 s); this bounds the whole in case of a bug.

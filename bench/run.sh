@@ -7,12 +7,7 @@
 #
 #   bench/run.sh           the full run (the figures in BENCHMARKS.md)
 #   bench/run.sh --quick   a 1.5-minute smoke run with short settings (figures not meaningful)
-set -euo pipefail
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-cd "$root"
-
-quick=false
-if [ "${1:-}" = "--quick" ]; then quick=true; fi
+. "$(dirname "${BASH_SOURCE[0]}")/preamble.sh"
 
 if $quick; then
   jmh_settings=(-f 1 -wi 1 -w 1s -i 2 -r 1s)
@@ -25,17 +20,12 @@ else
   ingest_settings=(--count 200000 --repeats 3 --rates 20000,50000,100000,max)
 fi
 
-results="$root/bench/target/results"
-echo "== machine"
-echo "cores: $(nproc); CPU: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//'); memory: $(free -g | awk '/^Mem:/ {print $2 " GiB"}')"
-echo "JDK: $(java -version 2>&1 | head -2 | tail -1)"
-echo "OS: $(. /etc/os-release 2>/dev/null && echo "$PRETTY_NAME"), kernel $(uname -r); net.core.rmem_max $(cat /proc/sys/net/core/rmem_max 2>/dev/null || echo '?')"
+machine_info
 
-echo "== build"
-./mvnw -B -ntp -Pbench -pl bench -am package -DskipTests
+build_bench
+# Every run starts from an empty results folder: the summary reads what this run wrote.
 rm -rf "$results"
 mkdir -p "$results"
-cp="$root/bench/target/pod-bench-0.1.0-SNAPSHOT.jar:$root/bench/target/lib/*"
 
 echo "== fixtures (io.dronefleet-encoded MAVLink 2 datagrams, decoded by every benchmark below)"
 java -cp "$cp" pod.bench.WriteFixturesKt "$results/fixtures"

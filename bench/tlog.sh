@@ -11,12 +11,7 @@
 #   bench/tlog.sh --quick     a smoke run: 2 vehicles, 10 minutes of log, one pass each (seconds after the build)
 #   any other option goes to the harness (a later option wins), e.g. --speeds 100,1000 --replays 5
 # The Python with pymavlink is POD_PYTHON, else .venv/bin/python (tools/python-peers.sh makes it).
-set -euo pipefail
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-cd "$root"
-
-quick=false
-if [ "${1:-}" = "--quick" ]; then quick=true; shift; fi
+. "$(dirname "${BASH_SOURCE[0]}")/preamble.sh"
 
 if $quick; then
   settings=(--vehicles 2 --duration 10m --reads 1 --warmup 1 --python-reads 1 --python-warmup 0 --replays 1 --replay-warmup 0)
@@ -30,23 +25,19 @@ if [ ! -x "$python" ]; then
   exit 2
 fi
 
-results="$root/bench/target/results"
-bench/machine-info.sh
+machine_info
 echo "Python $("$python" -c 'import platform; print(platform.python_version())'), pymavlink $("$python" -c 'import importlib.metadata as m; print(m.version("pymavlink"))'), fastcrc $("$python" -c 'import importlib.metadata as m; print(m.version("fastcrc"))' 2>/dev/null || echo none)"
 
-echo "== build"
-./mvnw -B -ntp -Dkotlin.compiler.daemon=false -Pbench -pl bench -am package -DskipTests
-mkdir -p "$results"
-cp="$root/bench/target/pod-bench-0.1.0-SNAPSHOT.jar:$root/bench/target/lib/*"
+build_bench
 
 echo "== tlog read and replay"
 # Other work on this machine shows in the figures: say how busy it was.
-echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "load average before: $(load)"
 # Every pass is bounded inside the harness; this bounds the whole in case of a bug.
 status=0
 timeout 1200 java -Xms512m -Xmx512m -cp "$cp" pod.bench.tlog.TlogBenchKt "${settings[@]}" \
   --log bench/target/tlog/synthetic.tlog --python "$python" --script bench/pymavlink_tlog.py \
   --peer-log "$results/tlog-peers.log" --json "$results/tlog.json" --markdown "$results/tlog.md" "$@" \
   || status=$?
-echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "load average after: $(load)"
 exit $status

@@ -12,12 +12,7 @@
 #                                both autopilots, loopback and 100 ms RTT; ~30 minutes
 #   bench/waypoints.sh --quick   a smoke run: 3 waypoints, ArduCopter, loopback; ~2 minutes
 #   any other option goes to the harness (a later option wins), e.g. --reps 2
-set -euo pipefail
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-cd "$root"
-
-quick=false
-if [ "${1:-}" = "--quick" ]; then quick=true; shift; fi
+. "$(dirname "${BASH_SOURCE[0]}")/preamble.sh"
 
 if $quick; then
   settings=(--autopilots ARDUPILOT --conditions LOOPBACK --waypoints 3)
@@ -25,13 +20,9 @@ else
   settings=(--autopilots ARDUPILOT,PX4 --conditions LOOPBACK,RTT100 --waypoints 8 --spacing 40 --height 30 --action 2s)
 fi
 
-results="$root/bench/target/results"
-bench/machine-info.sh
+machine_info
 
-echo "== build"
-./mvnw -B -ntp -Dkotlin.compiler.daemon=false -Pbench -pl bench -am package -DskipTests
-mkdir -p "$results"
-cp="$root/bench/target/pod-bench-0.1.0-SNAPSHOT.jar:$root/bench/target/lib/*"
+build_bench
 
 echo "== waypoint action overhead"
 # Every flight is bounded inside the harness (10 minutes); this bounds the whole in case of a bug.

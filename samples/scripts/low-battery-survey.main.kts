@@ -4,8 +4,9 @@
 //   ./pod run samples/scripts/low-battery-survey.main.kts --sim 1 --time-scale 40
 //
 // `pod run` puts Pod on the classpath; run with plain `kotlin` after `./mvnw install`, the
-// DependsOn line below finds it in ~/.m2 (and then it flies 4 simulated drones in real time).
+// DependsOn lines below find it in ~/.m2 (and then it flies 4 simulated drones in real time).
 @file:DependsOn("pod:pod-launch:0.1.0-SNAPSHOT")
+@file:DependsOn("pod:pod-dsl:0.1.0-SNAPSHOT")
 
 import pod.core.units.m
 import pod.dsl.mission

@@ -78,7 +78,7 @@ class MissionExecutorSpec : StringSpec({
                 val home = sim.config.home
                 val mission = if (flavor == SimFlavor.ARDUPLANE) planeCircuit(home) else copterSurvey(home)
                 val events = ArrayList<MissionEvent>()
-                withTimeout(1.hours) { fleet.fly(v, mission) { events += it } }
+                withTimeout(1.hours) { fleet.fly(v, mission).collect { events += it } }
                 events.filter { it !is MissionEvent.Prepared } shouldBe inOrder(mission.steps.size)
                 // Got ready on the ground in the order it was done, and said so: the mode first, then armed.
                 events.filterIsInstance<MissionEvent.Prepared>().single().changes shouldBe when (flavor) {
@@ -166,7 +166,7 @@ class MissionExecutorSpec : StringSpec({
             val home = sim.config.home
             val mission = Mission("long", null, listOf(MissionStep.TakeOff(home.at(0, 0, 15.0), 0.deg), MissionStep.Waypoint(home.at(300, 0, 15.0)), MissionStep.Land(home.at(0, 0, 0.0))))
             val events = MutableStateFlow<List<MissionEvent>>(emptyList())
-            val flight = launch { fleet.fly(v, mission) { e -> events.value += e } }
+            val flight = launch { fleet.fly(v, mission).collect { e -> events.value += e } }
             withTimeout(10.minutes) { events.first { MissionEvent.StepStarted(1) in it } }
             withTimeout(1.seconds) { flight.cancelAndJoin() }
             withTimeout(10.seconds) { fleet.makeSafe(v, SafeState.HOLD) }
@@ -201,7 +201,7 @@ class MissionExecutorSpec : StringSpec({
             val home = sim.config.home
             val mission = Mission("long", null, listOf(MissionStep.TakeOff(home.at(0, 0, 15.0), 0.deg), MissionStep.Waypoint(home.at(300, 0, 15.0)), MissionStep.Land(home.at(0, 0, 0.0))))
             val started = CompletableDeferred<Unit>()
-            val flight = launch { fleet.fly(v, mission) { if (it == MissionEvent.StepStarted(1)) started.complete(Unit) } }
+            val flight = launch { fleet.fly(v, mission).collect { if (it == MissionEvent.StepStarted(1)) started.complete(Unit) } }
             withTimeout(10.minutes) { started.await() }
             withTimeout(1.seconds) { flight.cancelAndJoin() }
             withTimeout(2.seconds) { fleet.makeSafe(v, SafeState.RETURN_HOME) }
@@ -217,7 +217,7 @@ class MissionExecutorSpec : StringSpec({
             val mission = Mission("lost", null, listOf(MissionStep.TakeOff(home.at(0, 0, 15.0), 0.deg), MissionStep.Waypoint(home.at(300, 0, 15.0)), MissionStep.Land(home.at(0, 0, 0.0))))
             val outcome = CompletableDeferred<Throwable?>()
             val flight = launch {
-                outcome.complete(runCatching { fleet.fly(v, mission) { if (it == MissionEvent.StepStarted(1)) sim.stop() } }.exceptionOrNull())
+                outcome.complete(runCatching { fleet.fly(v, mission).collect { if (it == MissionEvent.StepStarted(1)) sim.stop() } }.exceptionOrNull())
             }
             val error = withTimeout(5.minutes) { outcome.await() }
             flight.join()
@@ -232,7 +232,7 @@ class MissionExecutorSpec : StringSpec({
             val home = sim.config.home
             val mission = Mission("refused", null, listOf(MissionStep.TakeOff(home.at(0, 0, 15.0), 0.deg), MissionStep.Land(home.at(0, 0, 0.0))))
             val events = ArrayList<MissionEvent>()
-            val e = shouldThrow<CommandRejected> { withTimeout(10.minutes) { fleet.fly(v, mission) { events += it } } }
+            val e = shouldThrow<CommandRejected> { withTimeout(10.minutes) { fleet.fly(v, mission).collect { events += it } } }
             e.command.command shouldBe MavCommands.COMPONENT_ARM_DISARM
             e.statusTexts.joinToString() shouldContain "Battery"
             events shouldBe listOf(MissionEvent.Uploaded(2))

@@ -1,5 +1,6 @@
 package pod.e2e
 
+import kotlinx.coroutines.flow.collect
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.collections.shouldContain
 import io.kotest.matchers.doubles.shouldBeGreaterThan
@@ -58,7 +59,7 @@ class PlaneMissionSpec : StringSpec({
             // Far enough that the flight outlasts a few heartbeats at 30×: a mission flown between two
             // heartbeats would never show AUTO to the start's confirmation.
             val next = Mission("next", null, listOf(MissionStep.TakeOff(home.at(0, 0, 40.0), 15.deg), MissionStep.Waypoint(home.at(3000, 0, 50.0))))
-            withTimeout(30.minutes) { fleet.fly(v, next) {} }
+            withTimeout(30.minutes) { fleet.fly(v, next).collect() }
             collecting.cancel()
             texts shouldContain "Aircraft in auto without a running mission"
             vehicle.telemetry.armed.value shouldBe true
@@ -97,7 +98,7 @@ class PlaneMissionSpec : StringSpec({
             )
             val texts = ArrayList<String>()
             val collecting = launch { sim.statusTexts.collect { texts += it } }
-            withTimeout(45.minutes) { fleet.fly(v, mission) {} }
+            withTimeout(45.minutes) { fleet.fly(v, mission).collect() }
             collecting.cancel()
             val slope = texts.first { it.startsWith("Landing glide slope") }.removePrefix("Landing glide slope ").removeSuffix(" degrees").toDouble()
             slope shouldBeLessThan 8.0

@@ -21,7 +21,7 @@ internal suspend fun pod.core.platform.Platform.flyUntilLoitering(
 ): Unit = kotlinx.coroutines.coroutineScope {
     val loitering = kotlinx.coroutines.CompletableDeferred<Unit>()
     val run = async {
-        fly(vehicle, mission) {
+        fly(vehicle, mission).collect {
             report(it)
             if (it is pod.core.platform.MissionEvent.Loitering) loitering.complete(Unit)
         }

@@ -39,7 +39,7 @@ class VehicleReadinessSpec : StringSpec({
                 val platform = MavlinkPlatform(gcs)
                 val heard = withTimeout(5.seconds) { gcs.vehicles.first { 61 in it } }.getValue(61)
                 withTimeout(5.seconds) { platform.initialising.first { 61 in it } }.getValue(61) shouldContain "home"
-                val home = Engine(platform, EngineConfig(timeSource = timebase.clock)).run {
+                val home = Engine(platform, EngineConfig(timebase = timebase)).run {
                     val v = pick(PickRequest(count = 1, timeout = 10.seconds))[0]
                     v.position.value.shouldNotBeNull()
                     v.home.value // what `v.home.value!!` in the README reads

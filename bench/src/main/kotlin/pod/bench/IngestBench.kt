@@ -1,5 +1,9 @@
 package pod.bench
 
+import com.github.ajalt.clikt.parameters.options.convert
+import com.github.ajalt.clikt.parameters.options.default
+import com.github.ajalt.clikt.parameters.options.option
+import com.github.ajalt.clikt.parameters.options.split
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.SupervisorJob
@@ -124,26 +128,23 @@ data class IngestOptions(
     val json: File? = null,
 ) {
     companion object {
-        fun parse(args: Array<String>): IngestOptions {
-            var options = IngestOptions()
-            var i = 0
-            while (i < args.size) {
-                val value = args.getOrNull(i + 1) ?: error("missing value after ${args[i]}")
-                options = when (args[i]) {
-                    "--count" -> options.copy(count = value.replace("_", "").toInt().also { require(it > 0) })
-                    "--rates" -> options.copy(loads = value.split(',').map { OfferedLoad.parse(it.trim()) })
-                    "--repeats" -> options.copy(repeats = value.toInt().also { require(it > 0) })
-                    "--send-limit" -> options.copy(sendLimit = Duration.parse(value).also { require(it in 1.seconds..2.minutes) })
-                    "--targets" -> options.copy(targets = value.split(',').map { Target.valueOf(it.trim().uppercase()) })
-                    "--thread-cpu" -> options.copy(threadCpu = value.toBooleanStrict())
-                    "--json" -> options.copy(json = File(value))
-                    else -> error("unknown option ${args[i]}")
-                }
-                i += 2
-            }
-            return options
-        }
+        /** The options [args] give (see [main] for the list). */
+        fun parse(args: Array<String>): IngestOptions = IngestCommand().parse(args)
     }
+}
+
+/** [IngestOptions] read from the command line. */
+private class IngestCommand : BenchCommand<IngestOptions>("IngestBenchKt", "UDP ingest: Pod's receive path against a bare NIO receiver.") {
+    private val d = IngestOptions()
+    private val count by option("--count", help = "datagrams per run").count(1..Int.MAX_VALUE).default(d.count)
+    private val loads by option("--rates", help = "offered loads per second, or max").convert { OfferedLoad.parse(it.trim()) }.split(",").default(d.loads)
+    private val repeats by option("--repeats").count(1..Int.MAX_VALUE).default(d.repeats)
+    private val sendLimit by option("--send-limit").duration(1.seconds..2.minutes).default(d.sendLimit)
+    private val targets by option("--targets").names<Target>().default(d.targets)
+    private val threadCpu by option("--thread-cpu").yesNo().default(d.threadCpu)
+    private val json by option("--json").file()
+
+    override fun options(): IngestOptions = IngestOptions(count, loads, repeats, sendLimit, targets, threadCpu, json)
 }
 
 /** The two receivers compared. */

@@ -101,7 +101,7 @@ class OperatorsTest : FunSpec({
     test("a program written with the DSL runs end to end on a fleet in virtual time") {
         runTest {
             val tiny = TinyFleet(2)
-            val said = tiny.program(EngineConfig(timeSource = testScheduler.timeSource)) {
+            val said = tiny.program(EngineConfig(timebase = virtualTimebase())) {
                 val v = pick { count(2); payload("camera") }
                 val (first, second) = v.members
                 execute(

@@ -1,5 +1,7 @@
 package pod.dsl
 
+import kotlinx.coroutines.flow.flow
+import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
@@ -39,7 +41,7 @@ internal class TinyFleet(count: Int) : Platform {
     val completed = mutableListOf<Pair<Int, String>>()
     val madeSafe = mutableListOf<Int>()
 
-    override suspend fun fly(vehicle: PlatformVehicle, mission: Mission, report: suspend (MissionEvent) -> Unit) {
+    override fun fly(vehicle: PlatformVehicle, mission: Mission): Flow<MissionEvent> = flow {
         val battery = (vehicle as TinyVehicle).battery
         repeat(mission.steps.size) {
             delay(10.seconds)

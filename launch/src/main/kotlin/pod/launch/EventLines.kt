@@ -6,7 +6,7 @@ import kotlin.time.Duration
 
 /** Engine events as one line each, for people: "  03:12  copter-2  step 4 of 19 done". */
 public class EventLines(private val names: (Int) -> String) {
-    /** The line for [event], or null for events too fine to print (task starts of plain composites). */
+    /** The line for [event], or null for events too fine to print (task starts of plain composites, a program's end). */
     public fun line(event: EngineEvent): String? {
         val text = when (event) {
             is EngineEvent.TaskStarted -> if (event.label.startsWith("slot") || event.label.contains(" on [")) "start  ${event.label}" else null
@@ -20,6 +20,7 @@ public class EventLines(private val names: (Int) -> String) {
             is EngineEvent.Picked -> "picked ${event.vehicles.joinToString { names(it) }}"
             is EngineEvent.Released -> "released ${event.vehicles.joinToString { names(it) }}"
             is EngineEvent.Message -> "» ${event.text}"
+            is EngineEvent.ProgramEnded -> null
         } ?: return null
         return "${clock(event.at)}  $text"
     }

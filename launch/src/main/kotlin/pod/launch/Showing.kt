@@ -1,5 +1,6 @@
 package pod.launch
 
+import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.CoroutineStart
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.takeWhile
@@ -13,7 +14,9 @@ import kotlin.time.Duration.Companion.seconds
 /**
  * Runs [block] as a program on this engine, handing every event to [onEvent] and its line (see
  * [EventLines], vehicle names from [names]) to [onLine] as it happens. Returns only once the
- * program's last event has been handed over, so callers see the whole run.
+ * program's last event has been handed over, so callers see the whole run: everything up to the
+ * engine's [EngineEvent.ProgramEnded] for this program, which itself is not handed over (nor are
+ * the releases that follow it).
  */
 public suspend fun <T> Engine.runShowing(
     names: (Int) -> String,
@@ -22,26 +25,22 @@ public suspend fun <T> Engine.runShowing(
     block: suspend Program.() -> T,
 ): T = coroutineScope {
     val lines = EventLines(names)
+    // The program's number is known once it starts; its events come after, so the collector waits for nothing.
+    val program = CompletableDeferred<Int>()
     val shown = launch(start = CoroutineStart.UNDISPATCHED) {
-        events.takeWhile { !(it is EngineEvent.Message && it.text == END) }.collect { event ->
+        events.takeWhile { !(it is EngineEvent.ProgramEnded && it.program == program.await()) }.collect { event ->
             onEvent(event)
             lines.line(event)?.let(onLine)
         }
     }
     try {
         this@runShowing.run {
-            try {
-                block()
-            } finally {
-                message(END)
-            }
+            program.complete(id)
+            block()
         }
     } finally {
-        // A bound, not a wait for time to pass: the END marker ends the collector.
+        // A bound, not a wait for time to pass: the program's end ends the collector.
         withTimeoutOrNull(5.seconds) { shown.join() }
         shown.cancel()
     }
 }
-
-/** The last event of a program run by [runShowing]; never shown. */
-private const val END = "\u0000end of program"

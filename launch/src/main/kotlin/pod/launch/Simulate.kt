@@ -61,7 +61,7 @@ public suspend fun <T> simulate(
         val tracks = Tracks()
         val recording = tracks.record(sim, this)
         try {
-            val result = Engine(sim, EngineConfig(timeSource = timebase.clock)).runShowing(
+            val result = Engine(sim, EngineConfig(timebase = timebase)).runShowing(
                 names = { names[it] ?: "vehicle $it" },
                 onLine = onLine,
                 onEvent = { event ->

@@ -119,7 +119,7 @@ public class MavlinkVehicle internal constructor(
      * elements at any time; [pod.mavlink.queue.QueueFlight] (or a program's queue task) flies it.
      * Durations count on the station's clock.
      */
-    public val queue: pod.core.queue.MissionQueue by lazy { pod.core.queue.MissionQueue(station.config.timebase.clock) }
+    public val queue: pod.core.queue.MissionQueue by lazy { pod.core.queue.MissionQueue(station.config.timebase) }
 
     /**
      * Text lines the vehicle sends (STATUSTEXT), as they arrive; a long line sent in chunks comes

@@ -8,6 +8,8 @@ import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withTimeout
 import pod.core.platform.Platform
+import pod.core.platform.QueueCapable
+import pod.core.platform.SurveyCapable
 import pod.core.time.Timebase
 import pod.core.units.Distance
 import pod.core.units.Location
@@ -59,7 +61,7 @@ public class SimPlatform private constructor(
     public val station: GroundStation,
     /** The platform over the station. */
     public val platform: MavlinkPlatform,
-) : Platform by platform, AutoCloseable {
+) : Platform by platform, QueueCapable by platform, SurveyCapable by platform, AutoCloseable {
 
     /** The simulated vehicle with [systemId]; throws NoSuchElementException when there is none. */
     public operator fun get(systemId: Int): SimVehicle =

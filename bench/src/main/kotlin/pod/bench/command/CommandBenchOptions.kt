@@ -1,5 +1,17 @@
 package pod.bench.command
 
+import com.github.ajalt.clikt.core.UsageError
+import com.github.ajalt.clikt.parameters.groups.provideDelegate
+import com.github.ajalt.clikt.parameters.options.default
+import com.github.ajalt.clikt.parameters.options.option
+import com.github.ajalt.clikt.parameters.types.long
+import pod.bench.BenchCommand
+import pod.bench.ReportFiles
+import pod.bench.count
+import pod.bench.counts
+import pod.bench.duration
+import pod.bench.file
+import pod.bench.names
 import java.io.File
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
@@ -35,38 +47,38 @@ data class CommandBenchOptions(
             if (lossyCount > 0) listOf(CommandCase(lossyCount, lossyRounds, lossyWarmUp, lossPercent)) else emptyList()
 
     companion object {
-        fun parse(args: Array<String>): CommandBenchOptions {
-            var o = CommandBenchOptions()
-            var i = 0
-            fun ints(value: String) = value.split(',').map { it.trim().toInt() }
-            while (i < args.size) {
-                val value = args.getOrNull(i + 1) ?: error("missing value after ${args[i]}")
-                o = when (args[i]) {
-                    "--counts" -> o.copy(counts = ints(value).onEach { require(it in 1..250) { "counts must be in 1..250, was $it" } })
-                    "--rounds" -> o.copy(rounds = ints(value).onEach { require(it in 1..10_000) { "rounds must be in 1..10000, was $it" } })
-                    "--warmup" -> o.copy(warmUps = ints(value).onEach { require(it in 0..10_000) { "warmup must be in 0..10000, was $it" } })
-                    "--lossy-count" -> o.copy(lossyCount = value.toInt().also { require(it in 0..250) { "lossy-count must be in 0..250, was $it" } })
-                    "--lossy-rounds" -> o.copy(lossyRounds = value.toInt().also { require(it in 1..10_000) { "lossy-rounds must be in 1..10000, was $it" } })
-                    "--lossy-warmup" -> o.copy(lossyWarmUp = value.toInt().also { require(it in 0..10_000) { "lossy-warmup must be in 0..10000, was $it" } })
-                    "--loss" -> o.copy(lossPercent = value.toInt().also { require(it in 1..90) { "loss must be a percentage in 1..90, was $it" } })
-                    "--stations" -> o.copy(stations = value.split(',').map { CommandStation.valueOf(it.trim().uppercase()) })
-                    "--gap" -> o.copy(gap = Duration.parse(value).also { require(it in Duration.ZERO..10.seconds) { "gap must be in 0s..10s, was $it" } })
-                    "--pod-warmup" -> o.copy(podWarmUpRounds = value.toInt().also { require(it in 0..100_000) { "pod-warmup must be in 0..100000, was $it" } })
-                    "--python-resend" -> o.copy(pythonResend = Duration.parse(value).also { require(it in 10.milliseconds..10.seconds) })
-                    "--seed" -> o.copy(seed = value.toLong())
-                    "--python" -> o.copy(python = File(value))
-                    "--script" -> o.copy(script = File(value))
-                    "--peer-log" -> o.copy(peerLog = File(value))
-                    "--json" -> o.copy(json = File(value))
-                    "--markdown" -> o.copy(markdown = File(value))
-                    else -> error("unknown option ${args[i]}")
-                }
-                i += 2
-            }
-            require(o.rounds.size == o.counts.size && o.warmUps.size == o.counts.size) {
-                "counts, rounds and warmup must have as many entries each, were ${o.counts}, ${o.rounds}, ${o.warmUps}"
-            }
-            return o
+        /** The options [args] give (see [main] for the list). */
+        fun parse(args: Array<String>): CommandBenchOptions = CommandBenchCommand().parse(args)
+    }
+}
+
+/** [CommandBenchOptions] read from the command line. */
+private class CommandBenchCommand : BenchCommand<CommandBenchOptions>("CommandBenchKt", "The command round trip on loopback, Pod against pymavlink.") {
+    private val d = CommandBenchOptions()
+    private val counts by option("--counts", help = "vehicles per case").counts(1..250).default(d.counts)
+    private val rounds by option("--rounds", help = "measured rounds per case").counts(1..10_000).default(d.rounds)
+    private val warmUps by option("--warmup", help = "warm-up rounds per case").counts(0..10_000).default(d.warmUps)
+    private val lossyCount by option("--lossy-count", help = "vehicles of the lossy case (0: none)").count(0..250).default(d.lossyCount)
+    private val lossyRounds by option("--lossy-rounds").count(1..10_000).default(d.lossyRounds)
+    private val lossyWarmUp by option("--lossy-warmup").count(0..10_000).default(d.lossyWarmUp)
+    private val lossPercent by option("--loss", help = "loss each way in the lossy case, %").count(1..90).default(d.lossPercent)
+    private val stations by option("--stations").names<CommandStation>().default(d.stations)
+    private val gap by option("--gap", help = "idle time between rounds").duration(Duration.ZERO..10.seconds).default(d.gap)
+    private val podWarmUpRounds by option("--pod-warmup").count(0..100_000).default(d.podWarmUpRounds)
+    private val pythonResend by option("--python-resend").duration(10.milliseconds..10.seconds).default(d.pythonResend)
+    private val seed by option("--seed").long().default(d.seed)
+    private val python by option("--python").file().default(d.python)
+    private val script by option("--script").file().default(d.script)
+    private val peerLog by option("--peer-log").file()
+    private val report by ReportFiles()
+
+    override fun options(): CommandBenchOptions {
+        if (rounds.size != counts.size || warmUps.size != counts.size) {
+            throw UsageError("counts, rounds and warmup must have as many entries each, were $counts, $rounds, $warmUps")
         }
+        return CommandBenchOptions(
+            counts, rounds, warmUps, lossyCount, lossyRounds, lossyWarmUp, lossPercent, stations, gap, podWarmUpRounds,
+            pythonResend, d.discovery, seed, python, script, peerLog, report.json, report.markdown,
+        )
     }
 }

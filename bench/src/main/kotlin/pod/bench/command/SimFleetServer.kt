@@ -1,5 +1,9 @@
 package pod.bench.command
 
+import com.github.ajalt.clikt.parameters.options.default
+import com.github.ajalt.clikt.parameters.options.option
+import pod.bench.BenchCommand
+import pod.bench.duration
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.cancelChildren
@@ -22,6 +26,7 @@ import kotlin.concurrent.thread
 import kotlin.system.exitProcess
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.hours
 import kotlin.time.Duration.Companion.seconds
 
 /**
@@ -41,7 +46,7 @@ import kotlin.time.Duration.Companion.seconds
  * Usage: `SimFleetServerKt [--limit 7200s]`.
  */
 fun main(args: Array<String>) {
-    val limit = args.indexOf("--limit").takeIf { it >= 0 }?.let { Duration.parse(args[it + 1]) } ?: 7200.seconds
+    val limit = ServerCommand().parse(args)
     thread(isDaemon = true, name = "fleet-limit") {
         Thread.sleep(limit.inWholeMilliseconds)
         System.err.println("fleet server: limit $limit reached, exiting")
@@ -146,4 +151,11 @@ private class RunningFleet(private val plain: SimFleet?, private val relayed: Li
             return RunningFleet(null, started)
         }
     }
+}
+
+/** The server's time limit from the command line. */
+private class ServerCommand : BenchCommand<Duration>("SimFleetServerKt", "Simulated vehicles for the command benchmark, driven over stdin.") {
+    private val limit by option("--limit", help = "exit this long after start").duration(1.seconds..24.hours).default(7200.seconds)
+
+    override fun options(): Duration = limit
 }

@@ -3,7 +3,14 @@ package pod.bench.engine
 import kotlinx.coroutines.CoroutineStart
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.runBlocking
+import com.github.ajalt.clikt.parameters.options.convert
+import com.github.ajalt.clikt.parameters.options.default
+import com.github.ajalt.clikt.parameters.options.option
+import com.github.ajalt.clikt.parameters.options.split
+import pod.bench.BenchCommand
+import pod.bench.count
 import pod.bench.percentile
+import pod.bench.yesNo
 import pod.core.engine.Engine
 import pod.core.engine.Task
 import pod.core.engine.VehicleSet
@@ -95,22 +102,18 @@ private data class Options(
     val cases: List<String> = listOf("concurrent", "sequence", "deep"),
 )
 
-private fun parse(args: Array<String>): Options {
-    var o = Options()
-    var i = 0
-    while (i < args.size) {
-        val value = args.getOrNull(i + 1) ?: error("missing value after ${args[i]}")
-        o = when (args[i]) {
-            "--leaves" -> o.copy(leaves = value.toInt().also { require(it in 1..1_000_000) { "leaves must be in 1..1000000, was $it" } })
-            "--depth" -> o.copy(depth = value.toInt().also { require(it in 1..100_000) { "depth must be in 1..100000, was $it" } })
-            "--warmup" -> o.copy(warmup = value.toInt().also { require(it >= 0) { "warmup must be ≥ 0, was $it" } })
-            "--reps" -> o.copy(reps = value.toInt().also { require(it >= 1) { "reps must be ≥ 1, was $it" } })
-            "--yield" -> o.copy(yielding = value.toBooleanStrict())
-            "--events" -> o.copy(events = value.toBooleanStrict())
-            "--cases" -> o.copy(cases = value.split(',').map { it.trim() })
-            else -> error("unknown option ${args[i]}")
-        }
-        i += 2
-    }
-    return o
+private fun parse(args: Array<String>): Options = EngineBenchCommand().parse(args)
+
+/** [Options] read from the command line. */
+private class EngineBenchCommand : BenchCommand<Options>("EngineBenchKt", "Engine overhead on a platform whose missions finish at once.") {
+    private val d = Options()
+    private val leaves by option("--leaves").count(1..1_000_000).default(d.leaves)
+    private val depth by option("--depth").count(1..100_000).default(d.depth)
+    private val warmup by option("--warmup").count(0..Int.MAX_VALUE).default(d.warmup)
+    private val reps by option("--reps").count(1..Int.MAX_VALUE).default(d.reps)
+    private val yielding by option("--yield", help = "each flight yields once").yesNo().default(d.yielding)
+    private val events by option("--events", help = "collect Engine.events").yesNo().default(d.events)
+    private val cases by option("--cases").convert { it.trim() }.split(",").default(d.cases)
+
+    override fun options(): Options = Options(leaves, depth, warmup, reps, yielding, events, cases)
 }

@@ -1,5 +1,7 @@
 package pod.bench.engine
 
+import kotlinx.coroutines.flow.flow
+import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.yield
@@ -35,11 +37,11 @@ class InstantPlatform(count: Int, private val yielding: Boolean) : Platform {
     val fleet: List<InstantVehicle> = List(count) { InstantVehicle(it + 1) }
     override val vehicles: StateFlow<List<PlatformVehicle>> = MutableStateFlow(fleet)
 
-    override suspend fun fly(vehicle: PlatformVehicle, mission: Mission, report: suspend (MissionEvent) -> Unit) {
-        report(MissionEvent.Uploaded(mission.steps.size))
-        report(MissionEvent.Started)
+    override fun fly(vehicle: PlatformVehicle, mission: Mission): Flow<MissionEvent> = flow {
+        emit(MissionEvent.Uploaded(mission.steps.size))
+        emit(MissionEvent.Started)
         if (yielding) yield()
-        report(MissionEvent.Completed)
+        emit(MissionEvent.Completed)
     }
 
     override suspend fun makeSafe(vehicle: PlatformVehicle, state: SafeState) = Unit

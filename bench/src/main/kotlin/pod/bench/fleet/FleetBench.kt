@@ -1,5 +1,11 @@
 package pod.bench.fleet
 
+import com.github.ajalt.clikt.parameters.options.default
+import com.github.ajalt.clikt.parameters.options.option
+import pod.bench.BenchCommand
+import pod.bench.count
+import pod.bench.duration
+import pod.bench.file
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.delay
@@ -19,6 +25,7 @@ import java.util.concurrent.TimeUnit
 import java.util.concurrent.atomic.AtomicBoolean
 import java.util.concurrent.atomic.AtomicInteger
 import kotlin.time.Duration
+import kotlin.time.Duration.Companion.hours
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.minutes
 import kotlin.time.Duration.Companion.seconds
@@ -36,15 +43,7 @@ import kotlin.time.TimeSource
  * [--warmup 30s] [--command-every 50ms] [--json out.json]`
  */
 fun main(args: Array<String>) {
-    val o = args.toList().chunked(2).associate { (k, v) -> k.removePrefix("--") to v }
-    val options = Options(
-        vehicles = o["vehicles"]?.toInt() ?: 250,
-        senders = o["senders"]?.toInt() ?: 3,
-        duration = o["duration"]?.let(Duration::parse) ?: 10.minutes,
-        warmup = o["warmup"]?.let(Duration::parse) ?: 30.seconds,
-        commandEvery = o["command-every"]?.let(Duration::parse) ?: 50.milliseconds,
-        json = o["json"]?.let(::File),
-    )
+    val options = FleetBenchCommand().parse(args)
     val result = runBlocking(Dispatchers.Default) { run(options) }
     println(result.markdown())
     options.json?.writeText(result.json() + "\n")
@@ -58,6 +57,18 @@ data class Options(
     val commandEvery: Duration,
     val json: File?,
 )
+
+/** [Options] read from the command line. */
+private class FleetBenchCommand : BenchCommand<Options>("FleetBenchKt", "Fleet scale: one ground station hearing hundreds of lean vehicles.") {
+    private val vehicles by option("--vehicles").count(1..255).default(250)
+    private val senders by option("--senders", help = "sender JVMs the vehicles are spread over").count(1..64).default(3)
+    private val duration by option("--duration", help = "measured time").duration(1.seconds..24.hours).default(10.minutes)
+    private val warmup by option("--warmup").duration(Duration.ZERO..1.hours).default(30.seconds)
+    private val commandEvery by option("--command-every").duration(1.milliseconds..1.minutes).default(50.milliseconds)
+    private val json by option("--json").file()
+
+    override fun options(): Options = Options(vehicles, senders, duration, warmup, commandEvery, json)
+}
 
 data class FleetResult(
     val options: Options,

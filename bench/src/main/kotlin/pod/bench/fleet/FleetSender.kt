@@ -1,5 +1,9 @@
 package pod.bench.fleet
 
+import com.github.ajalt.clikt.parameters.options.option
+import com.github.ajalt.clikt.parameters.options.required
+import pod.bench.BenchCommand
+import pod.bench.count
 import io.dronefleet.mavlink.common.Attitude
 import io.dronefleet.mavlink.common.CommandAck
 import io.dronefleet.mavlink.common.CommandLong
@@ -33,11 +37,17 @@ import java.nio.channels.Selector
  * `java -cp … pod.bench.fleet.FleetSenderKt --port 14550 --first 1 --count 84`
  */
 fun main(args: Array<String>) {
-    val options = args.toList().chunked(2).associate { (k, v) -> k.removePrefix("--") to v }
-    val port = options.getValue("port").toInt()
-    val first = options.getValue("first").toInt()
-    val count = options.getValue("count").toInt()
+    val (port, first, count) = SenderCommand().parse(args)
     FleetSender(InetSocketAddress("127.0.0.1", port), first, count).run()
+}
+
+/** The station's port, the first system id and how many vehicles, from the command line. */
+private class SenderCommand : BenchCommand<Triple<Int, Int, Int>>("FleetSenderKt", "Lean vehicles for the fleet-scale benchmark.") {
+    private val port by option("--port", help = "the station's UDP port on 127.0.0.1").count(1..65_535).required()
+    private val first by option("--first", help = "the first system id").count(1..255).required()
+    private val count by option("--count", help = "how many vehicles").count(1..255).required()
+
+    override fun options(): Triple<Int, Int, Int> = Triple(port, first, count)
 }
 
 private class FleetSender(private val station: InetSocketAddress, private val first: Int, count: Int) {

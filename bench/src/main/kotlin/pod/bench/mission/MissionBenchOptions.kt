@@ -1,5 +1,16 @@
 package pod.bench.mission
 
+import com.github.ajalt.clikt.parameters.groups.provideDelegate
+import com.github.ajalt.clikt.parameters.options.default
+import com.github.ajalt.clikt.parameters.options.option
+import com.github.ajalt.clikt.parameters.types.long
+import pod.bench.BenchCommand
+import pod.bench.ReportFiles
+import pod.bench.count
+import pod.bench.counts
+import pod.bench.duration
+import pod.bench.file
+import pod.bench.names
 import pod.core.vehicle.Autopilot
 import pod.mavlink.mission.TransferTiming
 import java.io.File
@@ -32,36 +43,35 @@ data class MissionBenchOptions(
     val cells: List<Cell> get() = flavours.flatMap { f -> sizes.flatMap { n -> lossPercents.map { Cell(f, n, it) } } }
 
     companion object {
-        fun parse(args: Array<String>): MissionBenchOptions {
-            var o = MissionBenchOptions()
-            var i = 0
-            fun ints(value: String) = value.split(',').map { it.trim().toInt() }
-            while (i < args.size) {
-                val value = args.getOrNull(i + 1) ?: error("missing value after ${args[i]}")
-                o = when (args[i]) {
-                    "--sizes" -> o.copy(sizes = ints(value).onEach { require(it in 1..5000) { "sizes must be in 1..5000, was $it" } })
-                    "--losses" -> o.copy(lossPercents = ints(value).onEach { require(it in 0..90) { "losses must be percentages in 0..90, was $it" } })
-                    "--flavours" -> o.copy(flavours = value.split(',').map { Autopilot.valueOf(it.trim().uppercase()) })
-                    "--stations" -> o.copy(stations = value.split(',').map { Station.valueOf(it.trim().uppercase()) })
-                    "--success-runs" -> o.copy(successRuns = value.toInt().also { require(it in 0..200) { "success-runs must be in 0..200, was $it" } })
-                    "--success-items" -> o.copy(successItems = value.toInt().also { require(it in 1..5000) })
-                    "--success-loss" -> o.copy(successLossPercent = value.toInt().also { require(it in 0..90) })
-                    "--floor-samples" -> o.copy(floorSamples = value.toInt().also { require(it in 10..100_000) })
-                    "--floor-warmup" -> o.copy(floorWarmUp = value.toInt().also { require(it in 0..100_000) })
-                    "--transfer-limit" -> o.copy(limits = o.limits.copy(transfer = Duration.parse(value).also { require(it in 1.seconds..10.minutes) }))
-                    "--min-timeout" -> o.copy(timing = o.timing.copy(minTimeout = Duration.parse(value)))
-                    "--initial-timeout" -> o.copy(timing = o.timing.copy(initialTimeout = Duration.parse(value)))
-                    "--seed" -> o.copy(seed = value.toLong())
-                    "--python" -> o.copy(python = File(value))
-                    "--mavsdk-script" -> o.copy(mavsdkScript = File(value))
-                    "--mavsdk-log" -> o.copy(mavsdkLog = File(value))
-                    "--json" -> o.copy(json = File(value))
-                    "--markdown" -> o.copy(markdown = File(value))
-                    else -> error("unknown option ${args[i]}")
-                }
-                i += 2
-            }
-            return o
-        }
+        /** The options [args] give (see [main] for the list). */
+        fun parse(args: Array<String>): MissionBenchOptions = MissionBenchCommand().parse(args)
     }
+}
+
+/** [MissionBenchOptions] read from the command line. */
+private class MissionBenchCommand : BenchCommand<MissionBenchOptions>("MissionBenchKt", "Mission transfers, Pod against MAVSDK, with loss.") {
+    private val d = MissionBenchOptions()
+    private val sizes by option("--sizes", help = "mission items per transfer").counts(1..5000).default(d.sizes)
+    private val lossPercents by option("--losses", help = "loss each way, %").counts(0..90).default(d.lossPercents)
+    private val flavours by option("--flavours").names<Autopilot>().default(d.flavours)
+    private val stations by option("--stations").names<Station>().default(d.stations)
+    private val successRuns by option("--success-runs").count(0..200).default(d.successRuns)
+    private val successItems by option("--success-items").count(1..5000).default(d.successItems)
+    private val successLossPercent by option("--success-loss").count(0..90).default(d.successLossPercent)
+    private val floorSamples by option("--floor-samples").count(10..100_000).default(d.floorSamples)
+    private val floorWarmUp by option("--floor-warmup").count(0..100_000).default(d.floorWarmUp)
+    private val transferLimit by option("--transfer-limit").duration(1.seconds..10.minutes).default(d.limits.transfer)
+    private val minTimeout by option("--min-timeout").duration(Duration.ZERO..Duration.INFINITE).default(d.timing.minTimeout)
+    private val initialTimeout by option("--initial-timeout").duration(Duration.ZERO..Duration.INFINITE).default(d.timing.initialTimeout)
+    private val seed by option("--seed").long().default(d.seed)
+    private val python by option("--python").file().default(d.python)
+    private val mavsdkScript by option("--mavsdk-script").file().default(d.mavsdkScript)
+    private val mavsdkLog by option("--mavsdk-log").file()
+    private val report by ReportFiles()
+
+    override fun options(): MissionBenchOptions = MissionBenchOptions(
+        sizes, lossPercents, flavours, stations, successRuns, successItems, successLossPercent, floorWarmUp, floorSamples,
+        d.limits.copy(transfer = transferLimit), d.timing.copy(minTimeout = minTimeout, initialTimeout = initialTimeout),
+        seed, python, mavsdkScript, mavsdkLog, report.json, report.markdown,
+    )
 }

@@ -1,5 +1,15 @@
 package pod.bench.queue
 
+import com.github.ajalt.clikt.parameters.groups.provideDelegate
+import com.github.ajalt.clikt.parameters.options.default
+import com.github.ajalt.clikt.parameters.options.option
+import com.github.ajalt.clikt.parameters.types.long
+import pod.bench.BenchCommand
+import pod.bench.ReportFiles
+import pod.bench.count
+import pod.bench.counts
+import pod.bench.duration
+import pod.bench.names
 import pod.sim.fault.LinkFaults
 import java.io.File
 import kotlin.time.Duration
@@ -41,29 +51,25 @@ data class QueueBenchOptions(
     fun repsFor(condition: LinkCondition): Int = if (condition.faults?.drop?.let { it > 0 } == true) lossyReps else reps
 
     companion object {
-        fun parse(args: Array<String>): QueueBenchOptions {
-            var o = QueueBenchOptions()
-            var i = 0
-            while (i < args.size) {
-                val value = args.getOrNull(i + 1) ?: error("missing value after ${args[i]}")
-                fun count(range: IntRange) = value.toInt().also { require(it in range) { "${args[i]} must be in $range, was $it" } }
-                o = when (args[i]) {
-                    "--sizes" -> o.copy(sizes = value.split(',').map { it.trim().toInt().also { n -> require(n in 1..1000) { "sizes must be in 1..1000, was $n" } } })
-                    "--conditions" -> o.copy(conditions = value.split(',').map { LinkCondition.valueOf(it.trim().uppercase().replace('-', '_')) })
-                    "--methods" -> o.copy(methods = value.split(',').map { ChangeMethod.valueOf(it.trim().uppercase()) })
-                    "--reps" -> o.copy(reps = count(1..1000))
-                    "--warmup" -> o.copy(warmUp = count(0..1000))
-                    "--lossy-reps" -> o.copy(lossyReps = count(1..1000))
-                    "--gap" -> o.copy(gap = Duration.parse(value).also { require(it in Duration.ZERO..10.seconds) { "gap must be in 0..10s, was $it" } })
-                    "--limit" -> o.copy(limit = Duration.parse(value).also { require(it in 1.seconds..10.minutes) { "limit must be in 1s..10m, was $it" } })
-                    "--seed" -> o.copy(seed = value.toLong())
-                    "--json" -> o.copy(json = File(value))
-                    "--markdown" -> o.copy(markdown = File(value))
-                    else -> error("unknown option ${args[i]}")
-                }
-                i += 2
-            }
-            return o
-        }
+        /** The options [args] give (see [main] for the list). */
+        fun parse(args: Array<String>): QueueBenchOptions = QueueBenchCommand().parse(args)
     }
+}
+
+/** [QueueBenchOptions] read from the command line. */
+private class QueueBenchCommand : BenchCommand<QueueBenchOptions>("QueueBenchKt", "A change in flight through the queue against a re-upload.") {
+    private val d = QueueBenchOptions()
+    private val sizes by option("--sizes", help = "mission sizes").counts(1..1000).default(d.sizes)
+    private val conditions by option("--conditions").names<LinkCondition>().default(d.conditions)
+    private val methods by option("--methods").names<ChangeMethod>().default(d.methods)
+    private val reps by option("--reps").count(1..1000).default(d.reps)
+    private val warmUp by option("--warmup").count(0..1000).default(d.warmUp)
+    private val lossyReps by option("--lossy-reps").count(1..1000).default(d.lossyReps)
+    private val gap by option("--gap").duration(Duration.ZERO..10.seconds).default(d.gap)
+    private val limit by option("--limit").duration(1.seconds..10.minutes).default(d.limit)
+    private val seed by option("--seed").long().default(d.seed)
+    private val report by ReportFiles()
+
+    override fun options(): QueueBenchOptions =
+        QueueBenchOptions(sizes, conditions, methods, reps, warmUp, lossyReps, gap, limit, seed, report.json, report.markdown)
 }

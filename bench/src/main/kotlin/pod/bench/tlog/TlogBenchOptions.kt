@@ -1,5 +1,17 @@
 package pod.bench.tlog
 
+import com.github.ajalt.clikt.parameters.groups.provideDelegate
+import com.github.ajalt.clikt.parameters.options.convert
+import com.github.ajalt.clikt.parameters.options.default
+import com.github.ajalt.clikt.parameters.options.option
+import com.github.ajalt.clikt.parameters.options.split
+import com.github.ajalt.clikt.parameters.types.long
+import pod.bench.BenchCommand
+import pod.bench.ReportFiles
+import pod.bench.count
+import pod.bench.duration
+import pod.bench.file
+import pod.bench.yesNo
 import java.io.File
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.hours
@@ -32,35 +44,35 @@ data class TlogBenchOptions(
     val markdown: File? = null,
 ) {
     companion object {
-        fun parse(args: Array<String>): TlogBenchOptions {
-            var o = TlogBenchOptions()
-            var i = 0
-            while (i < args.size) {
-                val value = args.getOrNull(i + 1) ?: error("missing value after ${args[i]}")
-                fun count(range: IntRange) = value.toInt().also { require(it in range) { "${args[i]} must be in $range, was $it" } }
-                o = when (args[i]) {
-                    "--vehicles" -> o.copy(vehicles = count(1..250))
-                    "--duration" -> o.copy(duration = Duration.parse(value).also { require(it in 1.seconds..24.hours) { "duration must be in 1s..24h, was $it" } })
-                    "--seed" -> o.copy(seed = value.toLong())
-                    "--log" -> o.copy(log = File(value))
-                    "--reads" -> o.copy(reads = count(1..100))
-                    "--warmup" -> o.copy(warmUp = count(0..100))
-                    "--python-reads" -> o.copy(pythonReads = count(0..100))
-                    "--python-warmup" -> o.copy(pythonWarmUp = count(0..100))
-                    "--speeds" -> o.copy(speeds = value.split(',').map { s -> s.trim().toDouble().also { require(it > 0 && it.isFinite()) { "speeds must be finite and > 0, was $it" } } })
-                    "--replays" -> o.copy(replays = count(1..100))
-                    "--replay-warmup" -> o.copy(replayWarmUp = count(0..100))
-                    "--bare-replay" -> o.copy(bareReplay = value.toBooleanStrict())
-                    "--python" -> o.copy(python = File(value))
-                    "--script" -> o.copy(script = File(value))
-                    "--peer-log" -> o.copy(peerLog = File(value))
-                    "--json" -> o.copy(json = File(value))
-                    "--markdown" -> o.copy(markdown = File(value))
-                    else -> error("unknown option ${args[i]}")
-                }
-                i += 2
-            }
-            return o
-        }
+        /** The options [args] give (see [main] for the list). */
+        fun parse(args: Array<String>): TlogBenchOptions = TlogBenchCommand().parse(args)
     }
+}
+
+/** [TlogBenchOptions] read from the command line. */
+private class TlogBenchCommand : BenchCommand<TlogBenchOptions>("TlogBenchKt", "Reading and replaying a synthetic tlog, Pod against pymavlink.") {
+    private val d = TlogBenchOptions()
+    private val vehicles by option("--vehicles").count(1..250).default(d.vehicles)
+    private val duration by option("--duration", help = "length of the synthetic log").duration(1.seconds..24.hours).default(d.duration)
+    private val seed by option("--seed").long().default(d.seed)
+    private val log by option("--log", help = "where the synthetic log is written").file().default(d.log)
+    private val reads by option("--reads").count(1..100).default(d.reads)
+    private val warmUp by option("--warmup").count(0..100).default(d.warmUp)
+    private val pythonReads by option("--python-reads").count(0..100).default(d.pythonReads)
+    private val pythonWarmUp by option("--python-warmup").count(0..100).default(d.pythonWarmUp)
+    private val speeds by option("--speeds", help = "replay speeds (1e9: unpaced)").convert("SPEED") { text ->
+        text.trim().toDoubleOrNull()?.takeIf { it > 0 && it.isFinite() } ?: fail("must be a finite number > 0, was $text")
+    }.split(",").default(d.speeds)
+    private val replays by option("--replays").count(1..100).default(d.replays)
+    private val replayWarmUp by option("--replay-warmup").count(0..100).default(d.replayWarmUp)
+    private val bareReplay by option("--bare-replay").yesNo().default(d.bareReplay)
+    private val python by option("--python").file().default(d.python)
+    private val script by option("--script").file().default(d.script)
+    private val peerLog by option("--peer-log").file()
+    private val report by ReportFiles()
+
+    override fun options(): TlogBenchOptions = TlogBenchOptions(
+        vehicles, duration, seed, log, reads, warmUp, pythonReads, pythonWarmUp, speeds, replays, replayWarmUp, bareReplay,
+        python, script, peerLog, report.json, report.markdown,
+    )
 }

@@ -1,6 +1,16 @@
 package pod.bench.waypoints
 
+import com.github.ajalt.clikt.parameters.groups.provideDelegate
+import com.github.ajalt.clikt.parameters.options.default
+import com.github.ajalt.clikt.parameters.options.option
+import com.github.ajalt.clikt.parameters.types.long
 import kotlinx.coroutines.Dispatchers
+import pod.bench.BenchCommand
+import pod.bench.ReportFiles
+import pod.bench.count
+import pod.bench.duration
+import pod.bench.names
+import pod.bench.number
 import kotlinx.coroutines.cancelChildren
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.first
@@ -35,32 +45,28 @@ data class WaypointBenchOptions(
     val markdown: File? = null,
 ) {
     companion object {
-        fun parse(args: Array<String>): WaypointBenchOptions {
-            var o = WaypointBenchOptions()
-            var i = 0
-            while (i < args.size) {
-                val value = args.getOrNull(i + 1) ?: error("missing value after ${args[i]}")
-                fun number(range: ClosedFloatingPointRange<Double>) = value.toDouble().also { require(it in range) { "${args[i]} must be in $range, was $it" } }
-                o = when (args[i]) {
-                    "--autopilots" -> o.copy(autopilots = value.split(',').map { Autopilot.valueOf(it.trim().uppercase()) })
-                    "--conditions" -> o.copy(conditions = value.split(',').map { LinkCondition.valueOf(it.trim().uppercase().replace('-', '_')) })
-                    "--mechanisms" -> o.copy(mechanisms = value.split(',').map { Mechanism.valueOf(it.trim().uppercase().replace('-', '_')) })
-                    "--waypoints" -> o.copy(waypoints = number(2.0..50.0).toInt())
-                    "--spacing" -> o.copy(spacing = number(5.0..500.0))
-                    "--height" -> o.copy(height = number(5.0..120.0))
-                    "--action" -> o.copy(action = Duration.parse(value).also { require(it in 0.seconds..60.seconds) { "action must be in 0..60s, was $it" } })
-                    "--reps" -> o.copy(reps = number(1.0..20.0).toInt())
-                    "--limit" -> o.copy(limit = Duration.parse(value).also { require(it in 1.minutes..30.minutes) { "limit must be in 1m..30m, was $it" } })
-                    "--seed" -> o.copy(seed = value.toLong())
-                    "--json" -> o.copy(json = File(value))
-                    "--markdown" -> o.copy(markdown = File(value))
-                    else -> error("unknown option ${args[i]}")
-                }
-                i += 2
-            }
-            return o
-        }
+        /** The options [args] give (see [main] for the list). */
+        fun parse(args: Array<String>): WaypointBenchOptions = WaypointBenchCommand().parse(args)
     }
+}
+
+/** [WaypointBenchOptions] read from the command line. */
+private class WaypointBenchCommand : BenchCommand<WaypointBenchOptions>("WaypointBenchKt", "What stopping at a waypoint for an action costs, per mechanism.") {
+    private val d = WaypointBenchOptions()
+    private val autopilots by option("--autopilots").names<Autopilot>().default(d.autopilots)
+    private val conditions by option("--conditions").names<LinkCondition>().default(d.conditions)
+    private val mechanisms by option("--mechanisms").names<Mechanism>().default(d.mechanisms)
+    private val waypoints by option("--waypoints").count(2..50).default(d.waypoints)
+    private val spacing by option("--spacing", help = "metres between waypoints").number(5.0..500.0).default(d.spacing)
+    private val height by option("--height", help = "metres above home").number(5.0..120.0).default(d.height)
+    private val action by option("--action", help = "how long each action takes").duration(0.seconds..60.seconds).default(d.action)
+    private val reps by option("--reps").count(1..20).default(d.reps)
+    private val limit by option("--limit", help = "longest flight").duration(1.minutes..30.minutes).default(d.limit)
+    private val seed by option("--seed").long().default(d.seed)
+    private val report by ReportFiles()
+
+    override fun options(): WaypointBenchOptions =
+        WaypointBenchOptions(autopilots, conditions, mechanisms, waypoints, spacing, height, action, reps, limit, seed, report.json, report.markdown)
 }
 
 /**

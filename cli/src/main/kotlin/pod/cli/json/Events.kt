@@ -42,7 +42,7 @@ internal fun telemetryEvent(vehicle: MavlinkVehicle): Event.Telemetry {
     )
 }
 
-/** A program's event as printed by `pod demo --json`, or null for one it does not print (a step starting). */
+/** A program's event as printed by `pod demo --json`, or null for one it does not print (a step starting, the program's end). */
 internal fun EngineEvent.toEvent(): Event? {
     val at = at.inWholeMilliseconds / 1000.0
     return when (this) {
@@ -66,6 +66,8 @@ internal fun EngineEvent.toEvent(): Event? {
         is EngineEvent.Picked -> Event.Picked(at, vehicles)
         is EngineEvent.Released -> Event.Released(at, vehicles)
         is EngineEvent.Message -> Event.Message(at, text)
+        // runShowing stops before it: the JSON lines end with the program's last task, as before.
+        is EngineEvent.ProgramEnded -> null
     }
 }
 

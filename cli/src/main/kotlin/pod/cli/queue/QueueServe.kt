@@ -85,7 +85,7 @@ internal class QueueServe(out: Output) : VehicleCommandBase(out, "serve") {
     override suspend fun act(vehicle: MavlinkVehicle): Unit = coroutineScope {
         val host = checkNotNull(server) { "prepare() binds the server" }
         // The vehicle's own queue, unless durations must count faster than the station's clock.
-        val queue = if (timeScale == 1.0) vehicle.queue else MissionQueue(kotlin.time.TimeSource.Monotonic, timeScale)
+        val queue = if (timeScale == 1.0) vehicle.queue else MissionQueue(pod.core.time.Timebase.System, timeScale)
         val view = QueueView(out, json, vehicle, queue)
         launch {
             try {

@@ -31,11 +31,12 @@ public class Engine(
     /** How programs run. */
     public val config: EngineConfig = EngineConfig(),
 ) {
-    private val started = config.timeSource.markNow()
+    private val started = config.timebase.clock.markNow()
     private val _events = MutableSharedFlow<EngineEvent>(extraBufferCapacity = Int.MAX_VALUE)
     private val _busy = MutableStateFlow(IntTrieMap.empty<String>())
     private val _revision = MutableStateFlow(0L)
     private val taskIds = MutableStateFlow(0)
+    private val programIds = MutableStateFlow(0)
 
     /** Everything that happens, in order. Subscribe before [run] to see a program from its start. */
     public val events: SharedFlow<EngineEvent> = _events.asSharedFlow()
@@ -53,14 +54,21 @@ public class Engine(
     internal val revision: StateFlow<Long> = _revision.asStateFlow()
 
     /**
-     * Runs [block] as a program and returns its result. Vehicles it picked are released when it
-     * ends, however it ends; cancelling the caller cancels its tasks, and every vehicle they flew
-     * is made safe before this returns.
+     * Runs [block] as a program and returns its result. When its code is done, however it ends, the
+     * engine publishes [EngineEvent.ProgramEnded] (so a consumer of [events] knows when to stop);
+     * the vehicles it still holds are released next. Cancelling the caller cancels its tasks, and
+     * every vehicle they flew is made safe before this returns.
      */
     public suspend fun <T> run(block: suspend Program.() -> T): T {
-        val program = Program(this)
+        val program = Program(this, nextId(programIds))
         try {
-            return coroutineScope { program.block() }
+            return coroutineScope {
+                try {
+                    program.block()
+                } finally {
+                    emit(EngineEvent.ProgramEnded(now(), program.id))
+                }
+            }
         } finally {
             withContext(NonCancellable) { program.releaseAll() }
         }
@@ -72,9 +80,11 @@ public class Engine(
     /** A vehicle-time span as wall time. */
     internal fun wall(vehicleTime: Duration): Duration = vehicleTime / platform.timeScale
 
-    internal fun nextTaskId(): Int {
+    internal fun nextTaskId(): Int = nextId(taskIds)
+
+    private fun nextId(counter: MutableStateFlow<Int>): Int {
         var id = 0
-        taskIds.update { id = it + 1; id }
+        counter.update { id = it + 1; id }
         return id
     }
 

@@ -1,9 +1,9 @@
 package pod.core.engine
 
+import pod.core.time.Timebase
 import pod.core.platform.SafeState
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
-import kotlin.time.TimeSource
 
 /** How an [Engine] runs programs. */
 public data class EngineConfig(
@@ -13,6 +13,9 @@ public data class EngineConfig(
     public val connectionTimeout: Duration = Duration.ZERO,
     /** How long to wait for a vehicle to confirm its safe state (wall time). */
     public val safeTimeout: Duration = 10.seconds,
-    /** The clock events are stamped with; tests pass the virtual clock. */
-    public val timeSource: TimeSource = TimeSource.Monotonic,
+    /**
+     * The clock events are stamped with and mission queues count on, with its dispatcher, one
+     * value so they cannot disagree; tests pass the virtual one.
+     */
+    public val timebase: Timebase = Timebase.System,
 )

@@ -44,4 +44,11 @@ public sealed interface EngineEvent {
 
     /** The program said [text] (Dolphin `message`). */
     public data class Message(override val at: Duration, val text: String) : EngineEvent
+
+    /**
+     * The code of program [program] ([Program.id]) is done, however it ended; the vehicles it still
+     * holds are released right after ([Released]). A consumer that shows one program's run stops
+     * here.
+     */
+    public data class ProgramEnded(override val at: Duration, val program: Int) : EngineEvent
 }

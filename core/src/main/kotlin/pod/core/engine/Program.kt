@@ -20,6 +20,8 @@ import kotlin.time.Duration
 public class Program internal constructor(
     /** The engine running this program. */
     public val engine: Engine,
+    /** Numbers the programs of [engine] in the order they start, from 1 ([EngineEvent.ProgramEnded] names it). */
+    public val id: Int,
 ) {
     private val _picked = MutableStateFlow<Set<Int>>(emptySet())
     private val runner = TaskRunner(engine, this)
@@ -86,7 +88,7 @@ public class Program internal constructor(
      * engine's clock and the platform's time scale). Fly it with a [Task.FlyQueue] (pod-dsl:
      * `queue on vehicle`) and feed it from any task.
      */
-    public fun missionQueue(): pod.core.queue.MissionQueue = pod.core.queue.MissionQueue(engine.config.timeSource, engine.platform.timeScale)
+    public fun missionQueue(): pod.core.queue.MissionQueue = pod.core.queue.MissionQueue(engine.config.timebase, engine.platform.timeScale)
 
     /** Publishes [text] as a [EngineEvent.Message] (Dolphin `message`). */
     public fun message(text: String) {

@@ -11,6 +11,8 @@ import kotlinx.coroutines.selects.select
 import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeoutOrNull
 import pod.core.platform.PlatformVehicle
+import pod.core.platform.queueCapable
+import pod.core.platform.surveyCapable
 import pod.core.platform.SafeState
 import pod.core.queue.QueueNeedsOneVehicle
 import pod.core.vehicle.ConnectionState
@@ -110,7 +112,7 @@ internal class TaskRunner(private val engine: Engine, private val program: Progr
         engine.emit(EngineEvent.Flying(engine.now(), id, vehicle.id, task.mission))
         steer(task.label, vehicle, task.onCancel) {
             try {
-                engine.platform.fly(vehicle, task.mission) {
+                engine.platform.fly(vehicle, task.mission).collect {
                     if (it is pod.core.platform.MissionEvent.Loitering) engine.loitering.update { held -> held + vehicle.id }
                     engine.emit(EngineEvent.Mission(engine.now(), id, vehicle.id, it))
                 }
@@ -126,7 +128,7 @@ internal class TaskRunner(private val engine: Engine, private val program: Progr
             coroutineScope {
                 // The queue's own events, as the program's: `pod run` shows elements start and end.
                 val relay = launch(start = kotlinx.coroutines.CoroutineStart.UNDISPATCHED) { task.queue.events.collect { engine.emit(EngineEvent.Queue(engine.now(), id, vehicle.id, it)) } }
-                engine.platform.flyQueue(vehicle, task.queue, task.whenEmpty)
+                engine.platform.queueCapable().flyQueue(vehicle, task.queue, task.whenEmpty)
                 relay.cancel()
             }
         }
@@ -134,7 +136,7 @@ internal class TaskRunner(private val engine: Engine, private val program: Progr
 
     private suspend fun survey(task: Task.Survey, vehicles: VehicleSet) {
         val vehicle = vehicles.singleOrNull() ?: throw if (vehicles.isEmpty()) UnboundTask(task.label) else pod.core.workflow.SurveyNeedsOneVehicle(vehicles.size)
-        steer(task.label, vehicle, task.onCancel) { engine.platform.flySurvey(vehicle, task.job) }
+        steer(task.label, vehicle, task.onCancel) { engine.platform.surveyCapable().flySurvey(vehicle, task.job) }
     }
 
     /**

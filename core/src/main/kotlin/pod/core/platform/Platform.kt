@@ -1,10 +1,13 @@
 package pod.core.platform
 
+import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.StateFlow
 import pod.core.mission.Mission
 
 /**
  * What the engine needs from a fleet: the vehicles it can use and a way to fly a mission on one.
+ * What only some fleets can do (fly a mission queue, a survey workflow) is a capability the
+ * engine discovers on the platform: [QueueCapable], [SurveyCapable].
  *
  * The MAVLink module implements it over a ground station (real or simulated vehicles); core's
  * tests implement it with a fake fleet in virtual time. The engine guarantees that it never asks
@@ -22,33 +25,18 @@ public interface Platform {
     public val timeScale: Double get() = 1.0
 
     /**
-     * Flies [mission] on [vehicle] and returns when it is complete as [Mission.completion] defines
-     * (a mission ending in an unlimited loiter runs until cancelled, reporting [MissionEvent.Loitering]).
-     * Reports what happens through [report]. Throws a typed exception when the vehicle refuses,
-     * fails or is lost ([pod.core.vehicle.VehicleLost]). When the caller is cancelled this returns
+     * The flight of [mission] on [vehicle], cold: collecting it flies the mission, emitting what
+     * happens as it happens, and completes when the mission is complete as [Mission.completion]
+     * defines (a mission ending in an unlimited loiter emits [MissionEvent.Loitering] and runs until
+     * the collector is cancelled). Collecting throws a typed exception when the vehicle refuses,
+     * fails or is lost ([pod.core.vehicle.VehicleLost]). Cancelling the collector ends the flight
      * promptly (with the CancellationException) without making the vehicle safe: the engine calls
      * [makeSafe] next.
+     *
+     * A flow rather than a callback so the engine hears each event in the flight's own coroutine, in
+     * order, with nothing buffered between the vehicle's report and the engine's event.
      */
-    public suspend fun fly(vehicle: PlatformVehicle, mission: Mission, report: suspend (MissionEvent) -> Unit)
-
-    /**
-     * Flies [queue] on [vehicle] (see [pod.core.queue.MissionQueue]) until it runs empty (with
-     * [whenEmpty] COMPLETE) or the caller is cancelled, like [fly]: typed exceptions when the
-     * vehicle refuses or is lost, no safe state of its own on cancellation. Platforms that cannot
-     * steer a vehicle element by element throw [pod.core.queue.QueueUnsupported].
-     */
-    public suspend fun flyQueue(vehicle: PlatformVehicle, queue: pod.core.queue.MissionQueue, whenEmpty: pod.core.queue.WhenEmpty) {
-        throw pod.core.queue.QueueUnsupported(this::class.simpleName ?: "this platform")
-    }
-
-    /**
-     * Flies the survey workflow [job] on [vehicle] until it is home (or, with a mission control,
-     * until the operator's flight ends), like [fly]: typed exceptions, no safe state of its own on
-     * cancellation. Platforms that cannot throw [pod.core.workflow.SurveyUnsupported].
-     */
-    public suspend fun flySurvey(vehicle: PlatformVehicle, job: pod.core.workflow.SurveyJob<*, *>) {
-        throw pod.core.workflow.SurveyUnsupported(this::class.simpleName ?: "this platform")
-    }
+    public fun fly(vehicle: PlatformVehicle, mission: Mission): Flow<MissionEvent>
 
     /** Puts [vehicle] in [state] (hold where it is, or return home) and returns once it is confirmed. */
     public suspend fun makeSafe(vehicle: PlatformVehicle, state: SafeState)

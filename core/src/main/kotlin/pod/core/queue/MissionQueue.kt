@@ -9,8 +9,8 @@ import kotlinx.coroutines.flow.asSharedFlow
 import kotlinx.coroutines.flow.asStateFlow
 import kotlinx.coroutines.flow.first
 import pod.core.PodException
+import pod.core.time.Timebase
 import kotlin.time.Duration
-import kotlin.time.TimeSource
 
 /**
  * A vehicle's dynamic mission queue, in the spirit of Paparazzi's mission interface: elements are
@@ -21,12 +21,12 @@ import kotlin.time.TimeSource
  * `pod.mavlink.queue.QueueFlight`) follows [state], commands the vehicle, and reports arrivals
  * ([arrived]) and the passing of time ([expire]). Calls are safe from any thread; each change is
  * applied atomically and published on [state], [status] and [events]. Durations are counted on
- * [clock] (pass the station's or the test scheduler's), in vehicle time: [timeScale] seconds of it
- * per second of [clock] (a simulator running faster than the wall clock; in a program,
- * `missionQueue()` passes the platform's).
+ * [timebase]'s clock (pass the station's or the test scheduler's), in vehicle time: [timeScale]
+ * seconds of it per second of that clock (a simulator running faster than the wall clock; in a
+ * program, `missionQueue()` passes the platform's).
  */
 public class MissionQueue(
-    private val clock: TimeSource = TimeSource.Monotonic,
+    private val timebase: Timebase = Timebase.System,
     /** Seconds of vehicle time per second of the clock (1 for real vehicles). */
     public val timeScale: Double = 1.0,
 ) {
@@ -34,7 +34,7 @@ public class MissionQueue(
         require(timeScale > 0 && timeScale.isFinite()) { "timeScale must be a positive number, was $timeScale" }
     }
 
-    private val origin = clock.markNow()
+    private val origin = timebase.clock.markNow()
     private val _state = MutableStateFlow(QueueState())
     private val _status = MutableStateFlow(QueueStatus.EMPTY)
     private val _events = MutableSharedFlow<QueueEvent>(extraBufferCapacity = EVENT_BUFFER, onBufferOverflow = BufferOverflow.DROP_OLDEST)

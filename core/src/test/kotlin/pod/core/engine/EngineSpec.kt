@@ -1,5 +1,6 @@
 package pod.core.engine
 
+import pod.core.time.virtualTimebase
 import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldBeEmpty
@@ -26,7 +27,7 @@ import kotlin.time.Duration.Companion.seconds
 
 private fun fly(name: String, vararg on: PlatformVehicle, steps: Int = 3) = Task.Bound(Task.Fly(mission(name, steps)), VehicleSet(on.toList()))
 
-private fun TestScope.engine(fleet: FakeFleet) = Engine(fleet, EngineConfig(timeSource = testScheduler.timeSource))
+private fun TestScope.engine(fleet: FakeFleet) = Engine(fleet, EngineConfig(timebase = virtualTimebase()))
 
 class EngineSpec : FunSpec({
     test("a sequence flies its missions one after the other, a concurrency all at once") {
@@ -319,7 +320,7 @@ class EngineSpec : FunSpec({
             shape shouldContainExactly listOf(
                 "start sequence", "start a on [fake-1]", "start a",
                 "Flying", "Uploaded", "Started", "StepStarted", "StepDone", "Completed",
-                "done a", "done a on [fake-1]", "done sequence",
+                "done a", "done a on [fake-1]", "done sequence", "ProgramEnded",
             )
             (events.last().at) shouldBe 10.seconds
             events.filterIsInstance<EngineEvent.Mission>().map { it.event }.last() shouldBe MissionEvent.Completed

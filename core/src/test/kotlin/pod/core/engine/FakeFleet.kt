@@ -1,5 +1,7 @@
 package pod.core.engine
 
+import kotlinx.coroutines.flow.flow
+import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
@@ -65,25 +67,25 @@ internal class FakeFleet(
 
     operator fun get(id: Int): FakeVehicle = fakes.first { it.id == id }
 
-    override suspend fun fly(vehicle: PlatformVehicle, mission: Mission, report: suspend (MissionEvent) -> Unit) {
+    override fun fly(vehicle: PlatformVehicle, mission: Mission): Flow<MissionEvent> = flow {
         val fake = vehicle as FakeVehicle
         flights.update { it + (vehicle.id to mission.name) }
         flying.update { it + (vehicle.id to (it[vehicle.id] ?: 0) + 1) }
         if ((flying.value[vehicle.id] ?: 0) > 1) overlaps.update { it + 1 }
         try {
             fake.landedState.value = LandedState.IN_AIR
-            report(MissionEvent.Uploaded(mission.steps.size))
-            report(MissionEvent.Started)
+            emit(MissionEvent.Uploaded(mission.steps.size))
+            emit(MissionEvent.Started)
             mission.steps.forEachIndexed { index, _ ->
-                report(MissionEvent.StepStarted(index))
+                emit(MissionEvent.StepStarted(index))
                 delay(stepTime)
                 fake.setBattery(((fake.battery.value?.remaining ?: 1.0) - drainPerStep).coerceAtLeast(0.0))
-                report(MissionEvent.StepDone(index))
+                emit(MissionEvent.StepDone(index))
                 if (mission.name.startsWith("failsafe")) throw TookControl("${mission.name}: the autopilot of ${vehicle.name} took control")
                 if (mission.name.startsWith("fail")) error("${mission.name} failed on ${vehicle.name}")
             }
             if (mission.completion == pod.core.mission.MissionCompletion.LANDED) fake.landedState.value = LandedState.ON_GROUND
-            report(MissionEvent.Completed)
+            emit(MissionEvent.Completed)
             completed.update { it + (vehicle.id to mission.name) }
         } finally {
             flying.update { it + (vehicle.id to (it[vehicle.id] ?: 1) - 1) }

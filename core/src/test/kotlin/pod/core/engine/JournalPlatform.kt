@@ -1,5 +1,8 @@
 package pod.core.engine
 
+import kotlinx.coroutines.flow.flow
+import kotlinx.coroutines.flow.emitAll
+import kotlinx.coroutines.flow.Flow
 import pod.core.mission.Mission
 import pod.core.platform.MissionEvent
 import pod.core.platform.Platform
@@ -23,10 +26,10 @@ internal class JournalPlatform(private val fleet: FakeFleet, private val now: ()
 
     val journal = mutableListOf<Entry>()
 
-    override suspend fun fly(vehicle: PlatformVehicle, mission: Mission, report: suspend (MissionEvent) -> Unit) {
+    override fun fly(vehicle: PlatformVehicle, mission: Mission): Flow<MissionEvent> = flow {
         var completed = false
         try {
-            fleet.fly(vehicle, mission, report)
+            emitAll(fleet.fly(vehicle, mission))
             completed = true
         } finally {
             journal += Entry.FlightEnded(vehicle.id, mission.name, completed, fleet[vehicle.id].connection.value == ConnectionState.LOST, now())

@@ -1,5 +1,6 @@
 package pod.core.engine
 
+import pod.core.time.virtualTimebase
 import io.kotest.assertions.withClue
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldBeEmpty
@@ -19,7 +20,7 @@ class PickRaceSpec : FunSpec({
     test("releasing a vehicle twice fails the second time with NotPicked and announces one release") {
         runTest {
             val fleet = FakeFleet(2)
-            val engine = Engine(fleet, EngineConfig(timeSource = testScheduler.timeSource))
+            val engine = Engine(fleet, EngineConfig(timebase = virtualTimebase()))
             val released = mutableListOf<EngineEvent.Released>()
             val collector = launch { engine.events.collect { if (it is EngineEvent.Released) released += it } }
             testScheduler.runCurrent()

@@ -1,5 +1,6 @@
 package pod.core.engine
 
+import pod.core.time.virtualTimebase
 import io.kotest.assertions.withClue
 import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.shouldBe
@@ -96,7 +97,7 @@ internal fun TestScope.runAndCheck(scenario: Scenario): ScenarioResult {
     val fleet = FakeFleet(scenario.vehicles, stepTime = STEP_TIME, drainPerStep = 0.05)
     fleet.fakes.forEachIndexed { i, v -> v.setBattery(scenario.batteries[i]) }
     val platform = JournalPlatform(fleet) { currentTime.milliseconds }
-    val engine = Engine(platform, EngineConfig(timeSource = testScheduler.timeSource))
+    val engine = Engine(platform, EngineConfig(timebase = virtualTimebase()))
     val clock = MutableStateFlow(Duration.ZERO)
 
     val events = mutableListOf<EngineEvent>()

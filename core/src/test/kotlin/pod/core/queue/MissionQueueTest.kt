@@ -1,5 +1,6 @@
 package pod.core.queue
 
+import pod.core.time.virtualTimebase
 import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.shouldBe
@@ -18,7 +19,7 @@ class MissionQueueTest : StringSpec({
 
     "the four insertion modes, next and arrivals give Paparazzi's order, and events say why each element ended" {
         runTest {
-            val queue = MissionQueue(testScheduler.timeSource)
+            val queue = MissionQueue(virtualTimebase())
             val events = mutableListOf<QueueEvent>()
             val collecting = launch { queue.events.toList(events) }
             runCurrent()
@@ -53,7 +54,7 @@ class MissionQueueTest : StringSpec({
 
     "a duration runs out on the queue's clock and the next element starts with its whole duration" {
         runTest {
-            val queue = MissionQueue(testScheduler.timeSource)
+            val queue = MissionQueue(virtualTimebase())
             val circle = queue.append(QueueElement(QueuePattern.Circle(at(0.m, 0.m), -15.m), duration = 10.seconds))
             val hold = queue.append(QueueElement(QueuePattern.Hold, duration = 4.seconds))
             testScheduler.advanceTimeBy(6.seconds)
@@ -70,7 +71,7 @@ class MissionQueueTest : StringSpec({
 
     "a prepended element suspends the current one, which resumes with its whole duration" {
         runTest {
-            val queue = MissionQueue(testScheduler.timeSource)
+            val queue = MissionQueue(virtualTimebase())
             val circle = queue.append(QueueElement(QueuePattern.Circle(at(0.m, 0.m), 30.m), duration = 20.seconds))
             testScheduler.advanceTimeBy(15.seconds)
             val goto = queue.prepend(goto(5))
@@ -81,7 +82,7 @@ class MissionQueueTest : StringSpec({
 
     "a queue for a simulator running five times faster than its clock counts durations in vehicle time" {
         runTest {
-            val queue = MissionQueue(testScheduler.timeSource, timeScale = 5.0)
+            val queue = MissionQueue(virtualTimebase(), timeScale = 5.0)
             val hold = queue.append(QueueElement(QueuePattern.Hold, duration = 60.seconds))
             testScheduler.advanceTimeBy(11.seconds)
             queue.expire()
@@ -96,7 +97,7 @@ class MissionQueueTest : StringSpec({
         QueueElement(QueuePattern.Hold, duration = 0.seconds).limit shouldBe null
         QueueElement(QueuePattern.Hold, duration = (-3).seconds).limit shouldBe null
         runTest {
-            val queue = MissionQueue(testScheduler.timeSource)
+            val queue = MissionQueue(virtualTimebase())
             queue.append(QueueElement(QueuePattern.Circle(at(0.m, 0.m), 30.m), duration = 0.seconds))
             testScheduler.advanceTimeBy(3600.seconds)
             queue.expire()

@@ -2,16 +2,15 @@ package pod.launch.map
 
 import pod.core.units.Location
 import java.util.Locale
-import kotlin.math.cos
 import kotlin.math.floor
 import kotlin.math.log10
 import kotlin.math.max
 import kotlin.math.pow
 
 /**
- * Where a map's points go on the canvas: everything projected flat around the first point (exact
- * enough over the few kilometres a survey or a demo flies), scaled to fit a box of at most
- * [maxWidth] × [maxHeight] pixels, north up. The canvas is then cut to the content, so a tall
+ * Where a map's points go on the canvas: everything projected flat around the first point (core's
+ * flat Earth, exact enough over the few kilometres a survey or a demo flies), scaled to fit a box
+ * of at most [maxWidth] × [maxHeight] pixels, north up. The canvas is then cut to the content, so a tall
  * narrow survey gets a tall narrow picture instead of one lost in blank space.
  */
 internal class MapFrame(points: List<Location>, maxWidth: Double, maxHeight: Double) {
@@ -48,12 +47,9 @@ internal class MapFrame(points: List<Location>, maxWidth: Double, maxHeight: Dou
         return (x - minX) * scale to height - (y - minY) * scale
     }
 
-    private fun metres(p: Location): Pair<Double, Double> {
-        val metresPerDegree = 111_320.0
-        val x = (p.longitude - origin.longitude) * metresPerDegree * cos(Math.toRadians(origin.latitude))
-        val y = (p.latitude - origin.latitude) * metresPerDegree
-        return x to y
-    }
+    /** [p] as metres east (x) and north (y) of the origin, on core's flat Earth ([Location.northEastTo]). */
+    private fun metres(p: Location): Pair<Double, Double> =
+        origin.northEastTo(p).let { (north, east) -> east.meters to north.meters }
 
     /**
      * The scale bar's length in metres: the longest 1, 2 or 5 × 10ⁿ m that is at most [maxPixels]

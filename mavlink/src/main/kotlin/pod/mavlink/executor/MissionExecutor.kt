@@ -9,6 +9,7 @@ import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.currentCoroutineContext
 import kotlinx.coroutines.cancelChildren
+import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.MutableSharedFlow
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.SharedFlow
@@ -18,6 +19,7 @@ import kotlinx.coroutines.flow.asStateFlow
 import kotlinx.coroutines.flow.combine
 import kotlinx.coroutines.flow.filterNotNull
 import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.flow.flow
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withTimeoutOrNull
 import pod.core.mission.Mission
@@ -90,11 +92,15 @@ public class MissionExecutor(
     /** The plan uploaded, once made. */
     public val plan: StateFlow<MissionPlan?> = _plan.asStateFlow()
 
-    /** Flies the mission to completion, passing each event to [report] as it happens (see the class comment). */
-    public suspend fun run(report: suspend (MissionEvent) -> Unit = {}) {
+    /**
+     * The flight, cold: collecting it flies the mission to completion (see the class comment),
+     * emitting each event as it happens, in the collector's coroutine, and completes with the
+     * mission; failures are thrown from `collect`. Collect it once: one executor runs once.
+     */
+    public fun run(): Flow<MissionEvent> = flow {
         check(ran.compareAndSet(false, true)) { "a MissionExecutor runs once; make a new one for another flight" }
         try {
-            fly(report)
+            fly { emit(it) }
             _state.value = MissionRunState.COMPLETED
         } catch (e: CancellationException) {
             _state.value = MissionRunState.CANCELLED

@@ -2,7 +2,10 @@ package pod.mavlink.platform
 
 import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.ExperimentalCoroutinesApi
+import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.combine
+import kotlinx.coroutines.flow.emitAll
+import kotlinx.coroutines.flow.flow
 import kotlinx.coroutines.flow.flatMapLatest
 import kotlinx.coroutines.flow.flowOf
 import kotlinx.coroutines.flow.MutableStateFlow
@@ -13,6 +16,8 @@ import pod.core.mission.Mission
 import pod.core.platform.MissionEvent
 import pod.core.platform.Platform
 import pod.core.platform.PlatformVehicle
+import pod.core.platform.QueueCapable
+import pod.core.platform.SurveyCapable
 import pod.core.platform.SafeState
 import pod.mavlink.GroundStation
 import pod.mavlink.MavlinkVehicle
@@ -45,7 +50,7 @@ public class MavlinkPlatform(
     private val payloads: ((MavlinkVehicle) -> Set<String>)? = null,
     /** How queue tasks fly ([pod.mavlink.queue.QueueFlight]). */
     public val queueFlight: pod.mavlink.queue.QueueFlightConfig = pod.mavlink.queue.QueueFlightConfig(),
-) : Platform {
+) : Platform, QueueCapable, SurveyCapable {
     private val adapters = HashMap<Int, MavlinkPlatformVehicle>()
     private val _vehicles = MutableStateFlow(adapt(usable(station.vehicles.value.values.map { it to lacking(it) })))
     private val _initialising = MutableStateFlow(unusable(station.vehicles.value.values.map { it to lacking(it) }))
@@ -75,9 +80,8 @@ public class MavlinkPlatform(
      */
     public val initialising: StateFlow<Map<Int, String>> = _initialising.asStateFlow()
 
-    override suspend fun fly(vehicle: PlatformVehicle, mission: Mission, report: suspend (MissionEvent) -> Unit) {
-        MissionExecutor(mavlink(vehicle), mission, timing).run(report)
-    }
+    override fun fly(vehicle: PlatformVehicle, mission: Mission): Flow<MissionEvent> =
+        flow { emitAll(MissionExecutor(mavlink(vehicle), mission, timing).run()) }
 
     /** Flies [queue] on [vehicle] in its guided mode ([pod.mavlink.queue.QueueFlight]). */
     override suspend fun flyQueue(vehicle: PlatformVehicle, queue: pod.core.queue.MissionQueue, whenEmpty: pod.core.queue.WhenEmpty) {

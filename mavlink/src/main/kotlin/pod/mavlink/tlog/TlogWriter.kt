@@ -1,5 +1,6 @@
 package pod.mavlink.tlog
 
+import pod.core.time.Timebase
 import java.io.BufferedOutputStream
 import java.io.IOException
 import java.io.OutputStream
@@ -7,25 +8,24 @@ import java.nio.file.Files
 import java.nio.file.Path
 import java.nio.file.StandardOpenOption
 import kotlin.time.Duration.Companion.seconds
-import kotlin.time.TimeSource
 
 /**
  * Appends [TlogRecord]s to a stream in the tlog format (see [TlogRecord]).
  *
  * Thread-safe: a ground station writes received frames from its receive thread and sent frames
  * from its senders. Writes are buffered; the buffer goes to the stream at least once a second
- * of [clock] while records come (so a crash loses at most about a second), on [flush] and on [close].
+ * of [timebase]'s clock while records come (so a crash loses at most about a second), on [flush] and on [close].
  * Writing after [close], or a failing stream, throws [TlogWriteFailed].
  */
 public class TlogWriter(
     out: OutputStream,
-    /** What "a second" is measured on; a test passes its own. */
-    private val clock: TimeSource = TimeSource.Monotonic,
+    /** What "a second" is measured on (the station's timebase); a test passes its own. */
+    private val timebase: Timebase = Timebase.System,
 ) : AutoCloseable {
     private val out = BufferedOutputStream(out, 64 * 1024)
     private val lock = Any()
     private val header = ByteArray(TlogFrames.TIMESTAMP)
-    private var lastFlush = clock.markNow()
+    private var lastFlush = timebase.clock.markNow()
     private var closed = false
 
     /** Records written so far. */
@@ -48,7 +48,7 @@ public class TlogWriter(
                 records++
                 if (lastFlush.elapsedNow() >= FLUSH_INTERVAL) {
                     out.flush()
-                    lastFlush = clock.markNow()
+                    lastFlush = timebase.clock.markNow()
                 }
             } catch (e: IOException) {
                 throw TlogWriteFailed("cannot write to the tlog: ${e.message}", e)
@@ -65,7 +65,7 @@ public class TlogWriter(
             if (closed) return
             try {
                 out.flush()
-                lastFlush = clock.markNow()
+                lastFlush = timebase.clock.markNow()
             } catch (e: IOException) {
                 throw TlogWriteFailed("cannot write to the tlog: ${e.message}", e)
             }

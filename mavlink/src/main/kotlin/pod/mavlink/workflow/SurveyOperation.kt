@@ -168,8 +168,8 @@ public class SurveyOperation<F, B>(
 
     /** Flies [plan] from the start command [startId] to its end; returns the last event id applied. */
     private suspend fun fly(plan: SurveyPlan, startId: Long, startPaused: Boolean): Long = coroutineScope {
-        // Written by the command collector and read by the flight's progress callback (and the
-        // other way round): thread-safe holders.
+        // Written by the command collector and read where the flight's progress is collected (and
+        // the other way round): thread-safe holders.
         val applied = MutableStateFlow(startId)
         val where = MutableStateFlow<SurveyProgress?>(null)
         val paused = MutableStateFlow(startPaused)
@@ -178,11 +178,16 @@ public class SurveyOperation<F, B>(
             try {
                 send(ControlReport.Flying(applied.value, Pass.FORWARD, null))
                 takeOffIfOnGround(vehicle, plan.waypoints.first().location.altitude)
-                val run = workflow.run(plan, forward, backward, paused) { p ->
-                    where.value = p
-                    send(if (p.holding) ControlReport.Holding(applied.value, p.pass, p.waypoint) else ControlReport.Flying(applied.value, p.pass, p.waypoint))
+                workflow.flight(plan, forward, backward, paused).collect { event ->
+                    when (event) {
+                        is SurveyEvent.Progress -> {
+                            val p = event.progress
+                            where.value = p
+                            send(if (p.holding) ControlReport.Holding(applied.value, p.pass, p.waypoint) else ControlReport.Flying(applied.value, p.pass, p.waypoint))
+                        }
+                        is SurveyEvent.Finished -> _runs.value += event.run
+                    }
                 }
-                _runs.value += run
                 outcome.compareAndSet(null, Outcome.Done)
             } catch (e: PodException) {
                 outcome.compareAndSet(null, Outcome.Failed(e.message ?: e::class.simpleName.orEmpty()))

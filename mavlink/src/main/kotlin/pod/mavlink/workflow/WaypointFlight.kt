@@ -5,11 +5,14 @@ import kotlinx.coroutines.CoroutineStart
 import kotlinx.coroutines.TimeoutCancellationException
 import kotlinx.coroutines.async
 import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.Flow
+import kotlinx.coroutines.flow.FlowCollector
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.combine
 import kotlinx.coroutines.flow.filterNotNull
 import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.flow.flow
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.flow.merge
 import kotlinx.coroutines.withTimeoutOrNull
@@ -61,22 +64,47 @@ public class WaypointFlight(
 ) {
     /**
      * Flies [waypoints] (altitudes above home) in order and returns a record per waypoint; [stop]
-     * says where to stop and what to run there, [correction] keeps the height above the ground, and
-     * [control] pauses the flight and hears where it is.
+     * says where to stop and what to run there, [correction] keeps the height above the ground.
      */
-    public suspend fun <R> fly(
+    public suspend fun <R> fly(waypoints: List<Location>, stop: Stop<R>, correction: AltitudeCorrection? = null): List<WaypointRecord<R>> {
+        var records: List<WaypointRecord<R>>? = null
+        flight(waypoints, stop, correction).collect { if (it is WaypointFlightEvent.Finished) records = it.records }
+        return checkNotNull(records) { "the flight ended without its records" }
+    }
+
+    /**
+     * The flight of [fly], cold, for who watches where it is: collecting it flies, emitting
+     * [WaypointFlightEvent.Progress] whenever it heads for a waypoint or holds for a pause and, last,
+     * [WaypointFlightEvent.Finished] with the records; failures are thrown from `collect`. While
+     * [paused] is true the vehicle holds where it is, at its altitude (between waypoints it stops
+     * there; on a waypoint it stays once the action is done), and goes on when it turns false.
+     *
+     * Events are emitted in the flight's own coroutine, so a collector sees each as it happens,
+     * before the flight moves on.
+     */
+    public fun <R> flight(
         waypoints: List<Location>,
         stop: Stop<R>,
         correction: AltitudeCorrection? = null,
-        control: FlightControl? = null,
-    ): List<WaypointRecord<R>> = coroutineScope {
+        paused: StateFlow<Boolean> = MutableStateFlow(false),
+    ): Flow<WaypointFlightEvent<R>> = flow {
         require(waypoints.isNotEmpty()) { "give at least one waypoint" }
-        val queue = MissionQueue(vehicle.clock, timeScale)
+        val records = flyThrough(waypoints, stop, correction, paused)
+        emit(WaypointFlightEvent.Finished(records))
+    }
+
+    /** [flight]'s body, in the collector's coroutine (progress is emitted from here, never from a child). */
+    private suspend fun <R> FlowCollector<WaypointFlightEvent<R>>.flyThrough(
+        waypoints: List<Location>,
+        stop: Stop<R>,
+        correction: AltitudeCorrection?,
+        paused: StateFlow<Boolean>,
+    ): List<WaypointRecord<R>> = coroutineScope {
+        val queue = MissionQueue(vehicle.station.config.timebase, timeScale)
         val flight = async { QueueFlight(vehicle, queue, config).fly(WhenEmpty.WAIT) }
         // Written by the correction's collector, read by this loop: thread-safe holders.
         val offset = MutableStateFlow(Distance.ZERO)
         val flyingTo = MutableStateFlow<Int?>(null)
-        val paused = control?.paused ?: MutableStateFlow(false)
         fun goto(index: Int) = QueueElement(
             QueuePattern.Goto(QueuePoint.Global(waypoints[index])),
             altitude = (waypoints[index].altitude + offset.value).takeIf { it.meters > 0 },
@@ -92,9 +120,9 @@ public class WaypointFlight(
             if (!paused.value) return
             flyingTo.value = null
             if (!onWaypoint) queue.replaceCurrent(QueueElement(QueuePattern.Hold))
-            control?.onProgress?.invoke(index, true)
+            emit(WaypointFlightEvent.Progress(index, holding = true))
             paused.first { !it }
-            control?.onProgress?.invoke(index, false)
+            emit(WaypointFlightEvent.Progress(index, holding = false))
             if (!onWaypoint) {
                 flyingTo.value = index
                 queue.replaceCurrent(goto(index))
@@ -105,7 +133,7 @@ public class WaypointFlight(
         suspend fun reach(index: Int) {
             flyingTo.value = index
             queue.append(goto(index))
-            control?.onProgress?.invoke(index, false)
+            emit(WaypointFlightEvent.Progress(index, holding = false))
             // Reached: the queue ran empty (one goto at a time; a corrected altitude or a pause
             // replaces it). A flight that fails (a refusal, a lost vehicle) cancels this scope, and
             // its failure is what fly() throws.
@@ -259,15 +287,3 @@ public suspend fun MavlinkVehicle.takePhoto(timeout: Duration = 10.seconds): Pho
 
 /** An action's result, null included. */
 private class Finished<R>(val value: R)
-
-/**
- * Lets a [WaypointFlight] be paused and tells who is watching where it is: while [paused] is true
- * the vehicle holds where it is, at its altitude (between waypoints it stops there; on a waypoint
- * it stays once the action is done), and goes on when it turns false.
- */
-public class FlightControl(
-    /** True while the flight should hold. */
-    public val paused: StateFlow<Boolean>,
-    /** Called with the waypoint being flown to (or held on) and whether the vehicle now holds for a pause. */
-    public val onProgress: (waypoint: Int, holding: Boolean) -> Unit = { _, _ -> },
-)

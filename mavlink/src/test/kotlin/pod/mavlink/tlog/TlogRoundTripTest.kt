@@ -9,6 +9,8 @@ import io.kotest.property.arbitrary.int
 import io.kotest.property.arbitrary.list
 import io.kotest.property.arbitrary.long
 import io.kotest.property.checkAll
+import kotlinx.coroutines.Dispatchers
+import pod.core.time.Timebase
 import pod.mavlink.codec.FrameDecoder
 import pod.mavlink.codec.TestFrames
 import java.io.ByteArrayInputStream
@@ -126,7 +128,7 @@ class TlogRoundTripTest : StringSpec({
     "buffered records reach the stream once a second of the writer's clock has passed since the last flush" {
         val out = ByteArrayOutputStream()
         val clock = TestTimeSource()
-        val writer = TlogWriter(out, clock)
+        val writer = TlogWriter(out, Timebase(clock, Dispatchers.Unconfined))
         val frame = TestFrames.random(Random(6))
         writer.write(1, frame)
         clock += 999.milliseconds

@@ -3,18 +3,14 @@ package pod.sim.flight
 import pod.core.units.Location
 import pod.core.units.m
 import kotlin.math.atan2
-import kotlin.math.cos
 import kotlin.math.hypot
 
-/** Mean Earth radius, matching pod.core's flat-Earth [Location.offset]. */
-private const val EARTH_RADIUS_M = 6_371_008.8
-
-/** Metres north and east from [from] to [to] on a local flat Earth (the inverse of [Location.offset]). */
-internal fun northEast(from: Location, to: Location): Pair<Double, Double> {
-    val north = Math.toRadians(to.latitude - from.latitude) * EARTH_RADIUS_M
-    val east = Math.toRadians(to.longitude - from.longitude) * EARTH_RADIUS_M * cos(Math.toRadians(from.latitude))
-    return north to east
-}
+/**
+ * Metres north and east from [from] to [to] on the local flat Earth of core's [Location.northEastTo]
+ * (the inverse of [Location.offset]), as the bare numbers the airframes integrate.
+ */
+internal fun northEast(from: Location, to: Location): Pair<Double, Double> =
+    from.northEastTo(to).let { (north, east) -> north.meters to east.meters }
 
 /** Horizontal distance in metres on the same flat Earth as [northEast]. */
 internal fun horizontalDistance(from: Location, to: Location): Double = northEast(from, to).let { (n, e) -> hypot(n, e) }
