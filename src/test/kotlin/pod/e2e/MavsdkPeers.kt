@@ -7,6 +7,7 @@ import kotlinx.serialization.json.addJsonObject
 import kotlinx.serialization.json.buildJsonArray
 import kotlinx.serialization.json.put
 import pod.mavlink.GroundStation
+import pod.mavlink.GroundStationConfig
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionType
@@ -20,10 +21,15 @@ internal const val MAVSDK_VEHICLE_SYSID = 17
 /**
  * Runs [block] with a Pod ground station listening on loopback and MAVSDK 4 as the vehicle
  * (mavsdk_vehicle.py with [flags]: an AUTOPILOT component sending to our port; with a
- * MissionRawServer unless told otherwise, and ParamServer / ActionServer when asked).
+ * MissionRawServer unless told otherwise, and ParamServer / ActionServer when asked), the station
+ * configured by [station].
  */
-internal suspend fun withMavsdkVehicle(vararg flags: String, block: suspend (MavlinkVehicle, JsonPeer) -> Unit) = coroutineScope {
-    val gcs = GroundStation.open("udpin://127.0.0.1:0", this)
+internal suspend fun withMavsdkVehicle(
+    vararg flags: String,
+    station: GroundStationConfig = GroundStationConfig(),
+    block: suspend (MavlinkVehicle, JsonPeer) -> Unit,
+) = coroutineScope {
+    val gcs = GroundStation.open("udpin://127.0.0.1:0", this, station)
     val peer = Python.startJson("mavsdk_vehicle.py", gcs.link.localPort, MAVSDK_VEHICLE_SYSID, 40, *flags)
     try {
         withTimeout(15.seconds) { peer.await("ready") }

@@ -11,6 +11,8 @@ import kotlinx.coroutines.flow.take
 import kotlinx.coroutines.flow.toList
 import kotlinx.coroutines.withTimeout
 import pod.core.vehicle.Autopilot
+import pod.mavlink.GroundStationConfig
+import pod.mavlink.VehicleTiming
 import pod.mavlink.command.CommandRejected
 import pod.mavlink.command.CommandResult
 import pod.mavlink.command.CommandTimeout
@@ -32,6 +34,9 @@ private val QUICK = CommandTiming(
     timeout = 1.seconds, initialAttemptTimeout = 200.milliseconds, maxAttemptTimeout = 400.milliseconds,
     retryDelay = 200.milliseconds, temporarilyRejectedFor = 600.milliseconds,
 )
+
+/** A station whose commands to every vehicle are [QUICK]. */
+private val QUICK_COMMANDS = GroundStationConfig(vehicleTiming = VehicleTiming(commands = QUICK))
 
 /** The next [count] events named [name] that the peer printed. */
 private suspend fun JsonPeer.next(name: String, count: Int = 1): List<Map<String, String>> =
@@ -79,8 +84,7 @@ class MavsdkServerPluginsSpec : StringSpec({
     }
 
     "a parameter MAVSDK's ParamServer does not have is never answered, so Pod fails with ParamTimeout" {
-        withMavsdkVehicle("--no-mission-server", *PARAMS) { vehicle, _ ->
-            vehicle.params.timing = QUICK
+        withMavsdkVehicle("--no-mission-server", *PARAMS, station = GroundStationConfig(vehicleTiming = VehicleTiming(params = QUICK))) { vehicle, _ ->
             val error = shouldThrow<ParamTimeout> { vehicle.params.read("NO_SUCH_PARAM") }
             error.name shouldBe "NO_SUCH_PARAM"
             error.attempts shouldBeGreaterThan 1
@@ -102,8 +106,7 @@ class MavsdkServerPluginsSpec : StringSpec({
     }
 
     "a MAVSDK ActionServer that is not armable answers TEMPORARILY_REJECTED to every resend, and Pod gives up with CommandRejected" {
-        withMavsdkVehicle("--no-mission-server", "--action=refusing") { vehicle, peer ->
-            vehicle.commands.timing = QUICK
+        withMavsdkVehicle("--no-mission-server", "--action=refusing", station = QUICK_COMMANDS) { vehicle, peer ->
             val error = shouldThrow<CommandRejected> { vehicle.commands.send(VehicleCommand(MavCommands.COMPONENT_ARM_DISARM, param1 = 1f)) }
             error.result shouldBe CommandResult.TEMPORARILY_REJECTED
             error.resultCode shouldBe 1
@@ -118,8 +121,7 @@ class MavsdkServerPluginsSpec : StringSpec({
     }
 
     "MAVSDK's server components leave a command they have no handler for unanswered, so Pod fails with CommandTimeout" {
-        withMavsdkVehicle("--no-mission-server", "--action=armable") { vehicle, _ ->
-            vehicle.commands.timing = QUICK
+        withMavsdkVehicle("--no-mission-server", "--action=armable", station = QUICK_COMMANDS) { vehicle, _ ->
             // MAV_CMD_DO_SET_SERVO: no MAVSDK server plugin handles it, and MAVSDK sends no UNSUPPORTED.
             val error = shouldThrow<CommandTimeout> { vehicle.commands.send(VehicleCommand(MavCommands.DO_SET_SERVO, param1 = 9f, param2 = 1500f)) }
             error.waitingFor shouldBe "COMMAND_ACK"

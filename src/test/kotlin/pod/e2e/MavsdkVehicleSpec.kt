@@ -14,6 +14,8 @@ import kotlinx.coroutines.delay
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withTimeout
 import pod.core.vehicle.Autopilot
+import pod.mavlink.GroundStationConfig
+import pod.mavlink.VehicleTiming
 import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionTimeout
 import pod.mavlink.mission.MissionType
@@ -134,8 +136,8 @@ class MavsdkVehicleSpec : StringSpec({
     }
 
     "a MAVSDK vehicle without a mission server makes download and upload fail with MissionTimeout within the retry budget" {
-        withMavsdkVehicle("--no-mission-server") { vehicle, _ ->
-            vehicle.mission.timing = TransferTiming(initialTimeout = 100.milliseconds, minTimeout = 50.milliseconds, maxTimeout = 200.milliseconds, retries = 3, patience = kotlin.time.Duration.ZERO)
+        val quick = TransferTiming(initialTimeout = 100.milliseconds, minTimeout = 50.milliseconds, maxTimeout = 200.milliseconds, retries = 3, patience = kotlin.time.Duration.ZERO)
+        withMavsdkVehicle("--no-mission-server", station = GroundStationConfig(vehicleTiming = VehicleTiming(transfers = quick))) { vehicle, _ ->
             // 100 ms, then 200, 200, 200 (backed off, capped): 0.7 s in all.
             for ((operation, waitingFor) in listOf("download" to "the item count", "upload" to "the first item request")) {
                 val started = TimeSource.Monotonic.markNow()

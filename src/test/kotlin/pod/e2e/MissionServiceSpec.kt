@@ -12,7 +12,9 @@ import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withTimeout
 import pod.core.vehicle.Autopilot
+import pod.mavlink.GroundStationConfig
 import pod.mavlink.MavlinkVehicle
+import pod.mavlink.VehicleTiming
 import pod.mavlink.mission.MissionRejected
 import pod.mavlink.mission.MissionResult
 import pod.mavlink.mission.MissionType
@@ -24,10 +26,14 @@ import kotlin.time.Duration.Companion.seconds
 
 /**
  * Runs [block] in virtual time, on a [VirtualFleet] with a ground station and one simulated
- * vehicle configured by [config]; [block] has 40 s of vehicle time.
+ * vehicle configured by [config], its transfers timed by [transfers]; [block] has 40 s of vehicle time.
  */
-private fun withSim(config: SimVehicleConfig, block: suspend VirtualFleet.(MavlinkVehicle, SimVehicle) -> Unit) = virtualRun {
-    heard(config) { vehicle, sim -> withTimeout(40.seconds) { block(vehicle, sim) } }
+private fun withSim(
+    config: SimVehicleConfig,
+    transfers: TransferTiming = TransferTiming(),
+    block: suspend VirtualFleet.(MavlinkVehicle, SimVehicle) -> Unit,
+) = virtualRun {
+    heard(config, GroundStationConfig(vehicleTiming = VehicleTiming(transfers = transfers))) { vehicle, sim -> withTimeout(40.seconds) { block(vehicle, sim) } }
 }
 
 /** Starts uploading [count] items and cancels the upload once the vehicle has taken about a tenth of them. */
@@ -78,8 +84,7 @@ class MissionServiceSpec : StringSpec({
     }
 
     "a refusal that outlasts the wait says what the vehicle is holding" {
-        withSim(SimVehicleConfig(systemId = 36, autopilot = Autopilot.ARDUPILOT)) { vehicle, _ ->
-            vehicle.mission.timing = TransferTiming(deniedRetry = 2.seconds)
+        withSim(SimVehicleConfig(systemId = 36, autopilot = Autopilot.ARDUPILOT), TransferTiming(deniedRetry = 2.seconds)) { vehicle, _ ->
             vehicle.send(MissionCount.builder().targetSystem(36).targetComponent(1).count(20).build())
             shouldThrow<MissionRejected> { vehicle.mission.download() }.message shouldBe
                 "download of mission rejected by the vehicle: DENIED: the vehicle is still holding an unfinished upload (refused for 2.0 s)"
@@ -95,8 +100,7 @@ class MissionServiceSpec : StringSpec({
     }
 
     "NO_SPACE from a vehicle that is not starting up fails at once" {
-        withSim(SimVehicleConfig(systemId = 34, autopilot = Autopilot.ARDUPILOT, missionStorageReadyAfter = 30.seconds)) { vehicle, _ ->
-            vehicle.mission.timing = TransferTiming(serviceStartup = Duration.ZERO)
+        withSim(SimVehicleConfig(systemId = 34, autopilot = Autopilot.ARDUPILOT, missionStorageReadyAfter = 30.seconds), TransferTiming(serviceStartup = Duration.ZERO)) { vehicle, _ ->
             val mark = timebase.clock.markNow()
             shouldThrow<MissionRejected> { vehicle.mission.upload(waypoints(10)) }.result shouldBe MissionResult.NO_SPACE
             mark.elapsedNow() shouldBeLessThan 2.seconds

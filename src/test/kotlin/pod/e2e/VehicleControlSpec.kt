@@ -26,6 +26,7 @@ import pod.core.vehicle.VehicleType
 import pod.mavlink.GroundStation
 import pod.mavlink.GroundStationConfig
 import pod.mavlink.MavlinkVehicle
+import pod.mavlink.VehicleTiming
 import pod.mavlink.action.UnknownMode
 import pod.mavlink.command.CommandRejected
 import pod.mavlink.action.VehicleDisarmed
@@ -120,9 +121,9 @@ class VehicleControlSpec : StringSpec({
     }
 
     "a vehicle that stopped talking fails a command within its timeout, or as lost once its heartbeat is missed" {
-        virtualRun { flying(SimVehicleConfig(systemId = 44), GroundStationConfig(lostAfter = 30.seconds)) { v, sim ->
+        val quickCommands = VehicleTiming(commands = CommandTiming(timeout = 2.seconds))
+        virtualRun { flying(SimVehicleConfig(systemId = 44), GroundStationConfig(lostAfter = 30.seconds, vehicleTiming = quickCommands)) { v, sim ->
             sim.stop()
-            v.commands.timing = CommandTiming(timeout = 2.seconds)
             val error = shouldThrow<CommandTimeout> { withTimeout(5.seconds) { v.action.arm() } }
             error.waitingFor shouldBe "COMMAND_ACK"
         } }

@@ -41,7 +41,7 @@ import java.nio.file.Path
 /** `pod mission`: upload, download and clear a vehicle's mission, fence or rally list. */
 internal class MissionGroup(out: Output) : CliktCommand(name = "mission") {
     init {
-        subcommands(MissionUpload(out), MissionDownload(out), MissionClear(out))
+        subcommands(MissionUploadCommand(out), MissionDownloadCommand(out), MissionClearCommand(out))
     }
 
     override fun help(context: Context): String = "Upload, download or clear a vehicle's mission, fence or rally points (QGC WPL 110 files, or QGC .plan files for all three at once)."
@@ -102,7 +102,7 @@ internal abstract class MissionAction(out: Output, name: String) : VehicleComman
 }
 
 /** `pod mission upload FILE`: one WPL list, or a .plan file's mission, fence and rally lists. */
-internal class MissionUpload(out: Output) : MissionAction(out, "upload") {
+internal class MissionUploadCommand(out: Output) : MissionAction(out, "upload") {
     private val file by argument(help = "QGC WPL 110 file, or a QGC .plan file (mission, fence and rally; --type is ignored)")
     private val allowEmpty by option("--allow-empty", help = "upload a file with no items, which clears the vehicle's list").flag()
 
@@ -171,7 +171,7 @@ private fun suspiciousItems(lists: List<Pair<MissionType, List<MissionItem>>>, p
 }
 
 /** `pod mission download FILE`. */
-internal class MissionDownload(out: Output) : MissionAction(out, "download") {
+internal class MissionDownloadCommand(out: Output) : MissionAction(out, "download") {
     private val file by argument(help = "QGC WPL 110 file to write, or a .plan file for all three lists (--type is ignored)")
 
     override fun help(context: Context): String = "Download a vehicle's list into a QGC WPL 110 file, or all three lists into a QGC .plan file."
@@ -233,7 +233,7 @@ internal class MissionDownload(out: Output) : MissionAction(out, "download") {
 private val HOME_WAIT = 5.seconds
 
 /** `pod mission clear`. */
-internal class MissionClear(out: Output) : MissionAction(out, "clear") {
+internal class MissionClearCommand(out: Output) : MissionAction(out, "clear") {
     override fun help(context: Context): String = "Delete a vehicle's mission, fence or rally list."
 
     override suspend fun act(vehicle: MavlinkVehicle) {

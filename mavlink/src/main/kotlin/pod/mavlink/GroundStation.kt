@@ -10,18 +10,14 @@ import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.cancel
 import kotlinx.coroutines.delay
-import kotlinx.coroutines.flow.MutableSharedFlow
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.SharedFlow
 import kotlinx.coroutines.flow.StateFlow
-import kotlinx.coroutines.flow.asSharedFlow
 import kotlinx.coroutines.flow.asStateFlow
 import kotlinx.coroutines.isActive
 import kotlinx.coroutines.job
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withTimeoutOrNull
-import pod.core.vehicle.ConnectionState
-import pod.core.vehicle.VehicleIdentity
 import pod.mavlink.codec.FrameEncoder
 import pod.mavlink.codec.MavFrame
 import pod.mavlink.codec.MessageCodec
@@ -30,11 +26,9 @@ import pod.mavlink.link.LinkPeer
 import pod.mavlink.link.MavlinkLink
 import pod.mavlink.tlog.FrameDirection
 import pod.mavlink.tlog.FrameTap
+import pod.mavlink.tlog.FrameTaps
 import pod.mavlink.tlog.Recording
 import pod.mavlink.tlog.TlogWriter
-import java.util.concurrent.CopyOnWriteArrayList
-import java.util.concurrent.atomic.AtomicLong
-import kotlin.time.TimeMark
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
@@ -67,23 +61,19 @@ public class GroundStation private constructor(
     private val encoder = FrameEncoder(codec)
     private val sequences = SequenceNumbers()
     private val decoders = PeerDecoders(config.maxPeers, codec)
-    private val _vehicles = MutableStateFlow<Map<Int, MavlinkVehicle>>(emptyMap())
-    private val _events = MutableSharedFlow<FleetEvent>(extraBufferCapacity = 256)
     private val _stats = MutableStateFlow(LinkStats())
     private val _linkError = MutableStateFlow<LinkException?>(null)
-    @Volatile private var unrouted = 0L
     @Volatile private var fromSystemZero = 0L
     @Volatile private var handlerErrors = 0L
     @Volatile private var trackingErrors = 0L
-    private val recordingErrors = AtomicLong()
-    private val taps = CopyOnWriteArrayList<ActiveTap>()
-    private val streamRequests = StreamRequests(scope, config, ::linkBroken)
+    private val taps = FrameTaps(config.clock)
+    private val registry = VehicleRegistry(this, config.lostAfter, StreamRequests(scope, config, ::linkBroken)) { guarded(it) }
 
     /** Vehicles heard so far by system id, lost ones included (see [MavlinkVehicle.connection]). */
-    public val vehicles: StateFlow<Map<Int, MavlinkVehicle>> = _vehicles.asStateFlow()
+    public val vehicles: StateFlow<Map<Int, MavlinkVehicle>> = registry.vehicles
 
     /** Found, lost and regained vehicles, as they happen. */
-    public val events: SharedFlow<FleetEvent> = _events.asSharedFlow()
+    public val events: SharedFlow<FleetEvent> = registry.events
 
     /** What the receive path has counted, refreshed about four times a second. */
     public val stats: StateFlow<LinkStats> = _stats.asStateFlow()
@@ -115,7 +105,7 @@ public class GroundStation private constructor(
                 delay(tick)
                 // Each in its own guard: whatever goes wrong in one pass (stats of a decoder in use,
                 // a collector that throws) must not end the loop that marks vehicles lost.
-                guarded { checkSilence() }
+                guarded { registry.checkSilence() }
                 guarded { publishStats() }
             }
         }
@@ -154,7 +144,7 @@ public class GroundStation private constructor(
      */
     public suspend fun send(message: Any) {
         val target = MessageTargets.targetSystem(message)
-        val vehicle = if (target == null || target == 0) null else _vehicles.value[target]
+        val vehicle = if (target == null || target == 0) null else vehicles.value[target]
         if (vehicle != null) sendTo(vehicle, message) else broadcast(message)
     }
 
@@ -180,7 +170,7 @@ public class GroundStation private constructor(
 
     private fun encode(message: Any): ByteArray {
         val bytes = encoder.encode(message, config.systemId, config.componentId, sequences.next(config.systemId, config.componentId), config.mavlinkVersion)
-        if (taps.isNotEmpty()) tap(FrameDirection.SENT, bytes)
+        if (taps.active) taps.onFrame(FrameDirection.SENT, bytes)
         return bytes
     }
 
@@ -194,11 +184,7 @@ public class GroundStation private constructor(
      *
      * @see record for a tlog
      */
-    public fun record(tap: FrameTap, startEpochMicros: Long = TlogWriter.wallClockMicros()): Recording {
-        val active = ActiveTap(tap, startEpochMicros, config.clock.markNow())
-        taps += active
-        return Recording { taps.remove(active) }
-    }
+    public fun record(tap: FrameTap, startEpochMicros: Long = TlogWriter.wallClockMicros()): Recording = taps.add(tap, startEpochMicros)
 
     /**
      * Writes every frame this station sends and receives from now on to [writer], the tlog that
@@ -207,18 +193,6 @@ public class GroundStation private constructor(
      */
     public fun record(writer: TlogWriter, startEpochMicros: Long = TlogWriter.wallClockMicros()): Recording =
         record(FrameTap { t, _, frame -> writer.write(t, frame) }, startEpochMicros)
-
-    private fun tap(direction: FrameDirection, bytes: ByteArray) {
-        for (active in taps) {
-            try {
-                active.tap.onFrame(active.startEpochMicros + active.start.elapsedNow().inWholeMicroseconds, direction, bytes)
-            } catch (e: Exception) {
-                recordingErrors.incrementAndGet()
-            }
-        }
-    }
-
-    private class ActiveTap(val tap: FrameTap, val startEpochMicros: Long, val start: TimeMark)
 
     private inline fun guarded(block: () -> Unit) {
         try {
@@ -232,7 +206,7 @@ public class GroundStation private constructor(
 
     // Runs on the link's receive path (a UDP link's own thread), one datagram at a time: it is the
     // only writer of the routing state. What other threads read is safe as follows: `decoders`
-    // locks itself (the tracking loop adds up its counters); `_vehicles`, `_identity`, telemetry
+    // locks itself (the tracking loop adds up its counters); the registry's `_vehicles`, `_identity`, telemetry
     // and `_payloads` are StateFlows with this one writer; `_connection` changes only by
     // compareAndSet (the tracking loop marks LOST, this path CONNECTED again); `peer` and
     // `lastHeartbeat` are @Volatile; `heardMessages` is a concurrent set (StreamRequests clears
@@ -241,7 +215,7 @@ public class GroundStation private constructor(
     private fun onBytes(peer: LinkPeer, bytes: ByteArray) {
         val decoder = decoders.decoderFor(peer)
         decoder.feed(bytes) { frame ->
-            if (taps.isNotEmpty()) tap(FrameDirection.RECEIVED, encoder.wireBytes(frame))
+            if (taps.active) taps.onFrame(FrameDirection.RECEIVED, encoder.wireBytes(frame))
             try {
                 route(peer, frame)
             } catch (e: Exception) {
@@ -260,67 +234,12 @@ public class GroundStation private constructor(
             fromSystemZero++
             return
         }
-        val message = codec.decode(frame)
-        var vehicle = _vehicles.value[frame.systemId]
-        if (message is Heartbeat) {
-            val type = message.type().value()
-            val autopilot = message.autopilot().value()
-            if (vehicle == null && MavlinkEnums.isVehicle(type, autopilot)) {
-                vehicle = MavlinkVehicle(
-                    VehicleIdentity(frame.systemId, frame.componentId, MavlinkEnums.vehicleType(type), MavlinkEnums.autopilot(autopilot)),
-                    this,
-                )
-                vehicle.peer = peer
-                // Its first heartbeat is applied before anyone can see the vehicle: a caller that
-                // picks it from [vehicles] at once reads its armed state and mode, not defaults.
-                vehicle.onFrame(frame, message)
-                _vehicles.value = _vehicles.value + (frame.systemId to vehicle)
-                _events.tryEmit(FleetEvent.Found(vehicle))
-                streamRequests.restart(vehicle)
-                return
-            }
-            if (vehicle != null && frame.componentId == vehicle.identity.value.componentId && vehicle._connection.value == ConnectionState.LOST) {
-                // The frame (a heartbeat refreshes lastHeartbeat) and the turn to CONNECTED under the
-                // lock checkSilence reads them under: it never sees the vehicle regained with its
-                // old heartbeat time, which would mark it lost again at once.
-                val regained = synchronized(vehicle.connectionLock) {
-                    vehicle.peer = peer
-                    vehicle.onFrame(frame, message)
-                    vehicle._connection.compareAndSet(ConnectionState.LOST, ConnectionState.CONNECTED)
-                }
-                if (regained) {
-                    _events.tryEmit(FleetEvent.Regained(vehicle))
-                    streamRequests.restart(vehicle)
-                }
-                return
-            }
-        }
-        if (vehicle == null) {
-            unrouted++
-            return
-        }
-        vehicle.peer = peer
-        vehicle.onFrame(frame, message)
-    }
-
-    private fun checkSilence() {
-        for (vehicle in _vehicles.value.values) {
-            guarded { vehicle.flushStatusTexts() }
-            val silence = vehicle.lastHeartbeat.elapsedNow()
-            if (silence > config.lostAfter && synchronized(vehicle.connectionLock) {
-                    vehicle.lastHeartbeat.elapsedNow() > config.lostAfter &&
-                        vehicle._connection.compareAndSet(ConnectionState.CONNECTED, ConnectionState.LOST)
-                }
-            ) {
-                guarded { vehicle.markedLost() }
-                _events.tryEmit(FleetEvent.Lost(vehicle, silence))
-            }
-        }
+        registry.onMessage(peer, frame, codec.decode(frame))
     }
 
     private fun publishStats() {
         val t = decoders.totals()
-        _stats.value = LinkStats(t.frames, t.badCrc, t.skippedBytes, t.unknownMessages, unrouted, handlerErrors, t.evictions, trackingErrors, fromSystemZero, recordingErrors.get())
+        _stats.value = LinkStats(t.frames, t.badCrc, t.skippedBytes, t.unknownMessages, registry.unroutedFrames, handlerErrors, t.evictions, trackingErrors, fromSystemZero, taps.errors)
     }
 
     private fun gcsHeartbeat(): Heartbeat = Heartbeat.builder()
@@ -355,27 +274,3 @@ public class GroundStation private constructor(
         ): GroundStation = GroundStation(link, config, scope, codec).also { it.start() }
     }
 }
-
-/** Receive-path counters of a [GroundStation]. */
-public data class LinkStats(
-    /** Valid frames parsed. */
-    public val frames: Long = 0,
-    /** Frames dropped for a bad CRC. */
-    public val badCrc: Long = 0,
-    /** Garbage bytes skipped. */
-    public val skippedBytes: Long = 0,
-    /** Frames of message ids Pod's dialect does not know (routed undecoded). */
-    public val unknownMessages: Long = 0,
-    /** Frames from systems that never sent a vehicle HEARTBEAT (not routed). */
-    public val unrouted: Long = 0,
-    /** Frames whose handling failed (nonsense field values); counted and skipped. */
-    public val handlerErrors: Long = 0,
-    /** Source addresses whose decoder was dropped to stay within [GroundStationConfig.maxPeers]. */
-    public val evictedPeers: Long = 0,
-    /** Passes of the connection-tracking loop that failed and were skipped (the loop goes on). */
-    public val trackingErrors: Long = 0,
-    /** Frames whose sender claimed system id 0, the broadcast address (not routed, never a vehicle). */
-    public val fromSystemZero: Long = 0,
-    /** Frames a recording tap failed on (a tlog that could not be written); see [GroundStation.record]. */
-    public val recordingErrors: Long = 0,
-)

@@ -58,6 +58,11 @@ public data class GroundStationConfig(
      * more often, so that a gap of a few seconds of log at a high speed is not missed.
      */
     public val silenceCheckEvery: Duration? = null,
+    /**
+     * Timeouts and retries of the commands, parameter exchanges, mission transfers and actions of
+     * every vehicle found, fixed when it is found.
+     */
+    public val vehicleTiming: VehicleTiming = VehicleTiming(),
 ) {
     init {
         require(systemId in 1..255) { "systemId must be in 1..255, was $systemId" }

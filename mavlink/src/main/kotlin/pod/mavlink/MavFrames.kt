@@ -26,8 +26,16 @@ public object MavFrames {
     /** [GLOBAL_TERRAIN_ALT] with latitude and longitude as degrees × 10⁷. */
     public const val GLOBAL_TERRAIN_ALT_INT: Int = 11
 
+    /** Frames whose x and y are a latitude and a longitude. */
+    public val GLOBAL_FRAMES: Set<Int> = setOf(GLOBAL, GLOBAL_RELATIVE_ALT, GLOBAL_INT, GLOBAL_RELATIVE_ALT_INT, GLOBAL_TERRAIN_ALT, GLOBAL_TERRAIN_ALT_INT)
+
+    /**
+     * Frames whose x and y are local positions in metres (sent × 10⁴ in integer messages): LOCAL_NED
+     * 1, LOCAL_ENU 4, LOCAL_OFFSET_NED 7, BODY_NED 8, BODY_OFFSET_NED 9, BODY_FRD 12, the reserved
+     * 13..19 (local frames once) and LOCAL_FRD 20, LOCAL_FLU 21.
+     */
+    public val LOCAL_FRAMES: Set<Int> = setOf(1, 4, 7, 8, 9, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21)
+
     /** True when a frame's x and y are a latitude and a longitude. */
-    public fun isGlobal(frame: Int): Boolean =
-        frame == GLOBAL || frame == GLOBAL_RELATIVE_ALT || frame == GLOBAL_INT || frame == GLOBAL_RELATIVE_ALT_INT ||
-            frame == GLOBAL_TERRAIN_ALT || frame == GLOBAL_TERRAIN_ALT_INT
+    public fun isGlobal(frame: Int): Boolean = frame in GLOBAL_FRAMES
 }

@@ -10,7 +10,6 @@ public object MavlinkEnums {
     internal const val MAV_AUTOPILOT_GENERIC = 0
     internal const val MAV_AUTOPILOT_ARDUPILOTMEGA = 3
     internal const val MAV_AUTOPILOT_PX4 = 12
-    internal const val MAV_STATE_ACTIVE = 4
 
     /** MAV_TYPE numbers that are not vehicles even when an autopilot id is set. */
     private val notVehicles = setOf(

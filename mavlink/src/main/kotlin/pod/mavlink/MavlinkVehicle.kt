@@ -15,8 +15,13 @@ import pod.core.vehicle.LinkQuality
 import pod.core.vehicle.Severity
 import pod.core.vehicle.StatusText
 import pod.core.vehicle.VehicleIdentity
+import pod.mavlink.action.VehicleActions
 import pod.mavlink.codec.MavFrame
+import pod.mavlink.command.CommandService
 import pod.mavlink.link.LinkPeer
+import pod.mavlink.mission.MissionService
+import pod.mavlink.param.ParamService
+import pod.mavlink.protocol.RoundTrips
 import pod.mavlink.telemetry.StatusTextJoiner
 import pod.mavlink.telemetry.VehicleTelemetry
 import kotlin.time.TimeMark
@@ -99,20 +104,22 @@ public class MavlinkVehicle internal constructor(
      */
     public val payloads: StateFlow<Set<String>> = _payloads.asStateFlow()
 
+    private val timing: VehicleTiming get() = station.config.vehicleTiming
+
     /** Round-trip estimates every protocol exchange with this vehicle starts from and refines. */
-    internal val roundTrips: pod.mavlink.protocol.RoundTrips = pod.mavlink.protocol.RoundTrips()
+    internal val roundTrips: RoundTrips = RoundTrips(timing)
 
     /** Upload, download and clear its mission, fence and rally lists. */
-    public val mission: pod.mavlink.mission.MissionService = pod.mavlink.mission.MissionService(this)
+    public val mission: MissionService = MissionService(this, timing.transfers)
 
     /** Send commands and wait for their acknowledgement. */
-    public val commands: pod.mavlink.command.CommandService = pod.mavlink.command.CommandService(this)
+    public val commands: CommandService = CommandService(this, timing.commands)
 
     /** Read and write its parameters. */
-    public val params: pod.mavlink.param.ParamService = pod.mavlink.param.ParamService(this)
+    public val params: ParamService = ParamService(this, timing.params)
 
     /** Arm, change mode, take off, land, return, go to, pause and continue, each confirmed. */
-    public val action: pod.mavlink.action.VehicleActions = pod.mavlink.action.VehicleActions(this)
+    public val action: VehicleActions = VehicleActions(this, timing.actions)
 
     /**
      * This vehicle's dynamic mission queue (Paparazzi's mission interface): add, replace and skip

@@ -28,6 +28,26 @@ import pod.core.vehicle.ConnectionState
  *
  * One job per vehicle; a vehicle found again after being lost is asked again from the start
  * ([restart]), since a rebooted autopilot forgets what it was asked.
+ *
+ * The requests are fire-and-forget COMMAND_LONGs (confirmation 0, sent with [MavlinkVehicle.send]),
+ * not exchanges of the command service ([pod.mavlink.command.CommandService]), on purpose:
+ * - what confirms a request is the message arriving ([MavlinkVehicle.heardMessages], the home in
+ *   telemetry, a camera in [MavlinkVehicle.payloads]), not the COMMAND_ACK: ArduPilot acknowledges
+ *   SET_MESSAGE_INTERVAL (GCS_MAVLINK::handle_command_set_message_interval) and then a lost or
+ *   slow stream still leaves the station without it. So the evidence that matters is awaited, and
+ *   a request whose message does not come is sent again, like a resend of an unacknowledged command;
+ * - every request is idempotent (a rate set twice is set; a message asked twice is sent twice), so a
+ *   duplicate from a resend does no harm, and each is repeated on rediscovery anyway;
+ * - the command service keeps one exchange per MAV_CMD at a time and waits up to its timeout for an
+ *   answer: seven SET_MESSAGE_INTERVAL exchanges would queue behind each other, a vehicle that
+ *   never acknowledges them (an old autopilot, a router in between) would hold up a program's own
+ *   `setMessageInterval` for seconds, and a refusal (a message the autopilot does not stream) would
+ *   be an error nobody can act on.
+ * The vehicle's acknowledgements of these requests are not read. One caveat follows: while the
+ * first rounds run, an ACK of a stream request can arrive during a program's own exchange of the
+ * same command (SET_MESSAGE_INTERVAL, REQUEST_MESSAGE), which takes it for its answer, since an ACK
+ * names only the command: that exchange may then end with the stream request's result instead of
+ * its own (the same caveat holds for any two ground stations asking one vehicle).
  */
 internal class StreamRequests(
     private val scope: CoroutineScope,

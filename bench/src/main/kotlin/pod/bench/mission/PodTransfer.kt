@@ -9,6 +9,7 @@ import kotlinx.coroutines.withTimeout
 import pod.bench.RelayedVehicle
 import pod.mavlink.GroundStation
 import pod.mavlink.GroundStationConfig
+import pod.mavlink.VehicleTiming
 import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionType
 import pod.mavlink.mission.TransferTiming
@@ -23,7 +24,7 @@ import kotlin.time.TimeSource
 suspend fun podTransfer(cell: Cell, seed: Long, items: List<MissionItem>, limits: Limits, timing: TransferTiming): TransferRun = coroutineScope {
     // Heartbeats cross the lossy relay too: at 30 % loss several in a row go missing now and then,
     // and the default 3 s would call the vehicle lost in the middle of a transfer.
-    val gcs = GroundStation.open("udpin://127.0.0.1:0", this, GroundStationConfig(lostAfter = 30.seconds))
+    val gcs = GroundStation.open("udpin://127.0.0.1:0", this, GroundStationConfig(lostAfter = 30.seconds, vehicleTiming = VehicleTiming(transfers = timing)))
     var rig: RelayedVehicle? = null
     try {
         rig = startCellVehicle(this, cell, seed, gcs.link.localPort)
@@ -32,7 +33,6 @@ suspend fun podTransfer(cell: Cell, seed: Long, items: List<MissionItem>, limits
         } catch (e: TimeoutCancellationException) {
             return@coroutineScope TransferRun(Station.POD, cell, seed, null, null, setupError = "vehicle not discovered within ${limits.discovery}")
         }
-        vehicle.mission.timing = timing
         val upload = timed(limits.transfer) { vehicle.mission.upload(items, MissionType.MISSION) }
         var download: Step? = null
         var mismatch: String? = null

@@ -74,10 +74,10 @@ internal class GettingAirborne(private val vehicle: MavlinkVehicle, private val 
 
     /** The mode this autopilot takes off in from the ground. */
     private fun takeoffMode(): String? {
-        val (autopilot, type) = airframe()
+        val (autopilot, type) = vehicle.airframe()
         return when {
             // NAV_TAKEOFF in GUIDED (Mode::do_user_takeoff; has_user_takeoff in ArduCopter/mode.h).
-            autopilot != Autopilot.PX4 && !isPlane(type) -> FlightModes.forRole(autopilot, type, ModeRole.GUIDED)
+            autopilot != Autopilot.PX4 && !type.isPlane -> FlightModes.forRole(autopilot, type, ModeRole.GUIDED)
             // ArduPlane arms where it is, if it may, and then enters TAKEOFF ([VehicleActions.takeoff]);
             // PX4 arms in Hold and takes NAV_TAKEOFF.
             else -> armableNow()
@@ -86,16 +86,12 @@ internal class GettingAirborne(private val vehicle: MavlinkVehicle, private val 
 
     /** The mode to arm in now: the current one when the autopilot arms in it, else its hold mode. */
     private fun armableNow(): String? {
-        val (autopilot, type) = airframe()
+        val (autopilot, type) = vehicle.airframe()
         val current = vehicle.telemetry.mode.value?.name
         return if (current != null && ArmableModes.armable(autopilot, type, current)) null else FlightModes.forRole(autopilot, type, ModeRole.HOLD)?.takeIf {
             ArmableModes.armable(autopilot, type, it)
         } ?: FlightModes.forRole(autopilot, type, ModeRole.GUIDED)
     }
-
-    private fun airframe(): Pair<Autopilot, VehicleType> = vehicle.identity.value.let { it.autopilot to it.type }
-
-    private fun isPlane(type: VehicleType) = type == VehicleType.FIXED_WING || type == VehicleType.VTOL
 
     private companion object {
         /** How long a freshly heard vehicle's position and landed state may take to arrive. */
@@ -119,7 +115,7 @@ internal object ArmableModes {
     /** Whether [autopilot] arms a [type] in mode [name]. */
     fun armable(autopilot: Autopilot, type: VehicleType, name: String): Boolean = when {
         autopilot == Autopilot.PX4 -> name !in PX4
-        type == VehicleType.FIXED_WING || type == VehicleType.VTOL -> name !in PLANE
+        type.isPlane -> name !in PLANE
         else -> name !in COPTER
     }
 }

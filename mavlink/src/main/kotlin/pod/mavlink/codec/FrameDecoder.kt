@@ -26,7 +26,7 @@ public class FrameDecoder(private val codec: MessageCodec = MessageCodec.Default
     private var head = 0
     private var tail = 0
 
-    /** Bytes kept for the next [feed]: the start of an incomplete frame, always under [Wire.MAX_FRAME]. */
+    /** Bytes kept for the next [feed]: the start of an incomplete frame, always under [FrameLayout.MAX_FRAME]. */
     internal val pendingBytes: Int get() = tail - head
 
     /**
@@ -78,7 +78,7 @@ public class FrameDecoder(private val codec: MessageCodec = MessageCodec.Default
         while (head < tail) {
             val start = head
             val magic = buf[start].toInt() and 0xFF
-            if (magic != Wire.MAGIC_V1 && magic != Wire.MAGIC_V2) {
+            if (magic != FrameLayout.MAGIC_V1 && magic != FrameLayout.MAGIC_V2) {
                 skip()
                 continue
             }
@@ -88,22 +88,22 @@ public class FrameDecoder(private val codec: MessageCodec = MessageCodec.Default
             val version: Int
             val headerLength: Int
             val signatureLength: Int
-            if (magic == Wire.MAGIC_V2) {
+            if (magic == FrameLayout.MAGIC_V2) {
                 val incompat = buf[start + 2].toInt() and 0xFF
-                if (incompat and Wire.FLAG_SIGNED.inv() != 0) {
+                if (incompat and FrameLayout.FLAG_SIGNED.inv() != 0) {
                     skip() // a flag this parser does not know: the frame cannot be read safely
                     continue
                 }
                 version = 2
-                headerLength = Wire.HEADER_V2
-                signatureLength = if (incompat and Wire.FLAG_SIGNED != 0) Wire.SIGNATURE else 0
+                headerLength = FrameLayout.HEADER_V2
+                signatureLength = if (incompat and FrameLayout.FLAG_SIGNED != 0) FrameLayout.SIGNATURE else 0
             } else {
                 version = 1
-                headerLength = Wire.HEADER_V1
+                headerLength = FrameLayout.HEADER_V1
                 signatureLength = 0
             }
             val checksumAt = start + headerLength + payloadLength
-            val frameLength = headerLength + payloadLength + Wire.CHECKSUM + signatureLength
+            val frameLength = headerLength + payloadLength + FrameLayout.CHECKSUM + signatureLength
             if (available < frameLength) return // wait for the rest
             val messageId = if (version == 2) {
                 (buf[start + 7].toInt() and 0xFF) or ((buf[start + 8].toInt() and 0xFF) shl 8) or
@@ -133,7 +133,7 @@ public class FrameDecoder(private val codec: MessageCodec = MessageCodec.Default
                 incompatFlags = if (version == 2) buf[start + 2].toInt() and 0xFF else 0,
                 compatFlags = if (version == 2) buf[start + 3].toInt() and 0xFF else 0,
                 signature = if (signatureLength > 0) {
-                    buf.copyOfRange(checksumAt + Wire.CHECKSUM, checksumAt + Wire.CHECKSUM + signatureLength)
+                    buf.copyOfRange(checksumAt + FrameLayout.CHECKSUM, checksumAt + FrameLayout.CHECKSUM + signatureLength)
                 } else {
                     null
                 },
@@ -152,7 +152,7 @@ public class FrameDecoder(private val codec: MessageCodec = MessageCodec.Default
     }
 
     private companion object {
-        /** Room for a full datagram's worth of frames per pass; must exceed [Wire.MAX_FRAME]. */
+        /** Room for a full datagram's worth of frames per pass; must exceed [FrameLayout.MAX_FRAME]. */
         const val BUFFER_SIZE = 4096
     }
 }

@@ -22,7 +22,7 @@ public class FrameEncoder(private val codec: MessageCodec = MessageCodec.Default
         val length = when (version) {
             2 -> trimmedLength(payload)
             1 -> {
-                require(plan.id <= Wire.MAX_V1_MESSAGE_ID) {
+                require(plan.id <= FrameLayout.MAX_V1_MESSAGE_ID) {
                     "MAVLink 1 cannot carry message id ${plan.id} (${plan.messageClass.simpleName}), only 0..255"
                 }
                 plan.baseLength
@@ -46,11 +46,11 @@ public class FrameEncoder(private val codec: MessageCodec = MessageCodec.Default
      */
     public fun encode(frame: MavFrame): ByteArray {
         val crcExtra = codec.crcExtra(frame.messageId).let { if (it < 0) 0 else it }
-        require(frame.payload.size <= Wire.MAX_PAYLOAD) { "payload must be at most 255 bytes, was ${frame.payload.size}" }
+        require(frame.payload.size <= FrameLayout.MAX_PAYLOAD) { "payload must be at most 255 bytes, was ${frame.payload.size}" }
         val signature = frame.signature
         val incompat = when (frame.version) {
             1 -> {
-                require(frame.messageId in 0..Wire.MAX_V1_MESSAGE_ID) {
+                require(frame.messageId in 0..FrameLayout.MAX_V1_MESSAGE_ID) {
                     "MAVLink 1 message id must be in 0..255, was ${frame.messageId}"
                 }
                 require(signature == null && frame.incompatFlags == 0 && frame.compatFlags == 0) {
@@ -59,10 +59,10 @@ public class FrameEncoder(private val codec: MessageCodec = MessageCodec.Default
                 0
             }
             2 -> {
-                require(signature == null || signature.size == Wire.SIGNATURE) {
-                    "signature must be ${Wire.SIGNATURE} bytes, was ${signature?.size}"
+                require(signature == null || signature.size == FrameLayout.SIGNATURE) {
+                    "signature must be ${FrameLayout.SIGNATURE} bytes, was ${signature?.size}"
                 }
-                if (signature != null) frame.incompatFlags or Wire.FLAG_SIGNED else frame.incompatFlags and Wire.FLAG_SIGNED.inv()
+                if (signature != null) frame.incompatFlags or FrameLayout.FLAG_SIGNED else frame.incompatFlags and FrameLayout.FLAG_SIGNED.inv()
             }
             else -> throw IllegalArgumentException("version must be 1 or 2, was ${frame.version}")
         }
@@ -80,7 +80,7 @@ public class FrameEncoder(private val codec: MessageCodec = MessageCodec.Default
         val bytes = encode(frame)
         val checksum = frame.wireChecksum
         if (checksum >= 0) {
-            val at = bytes.size - Wire.CHECKSUM - (frame.signature?.size ?: 0)
+            val at = bytes.size - FrameLayout.CHECKSUM - (frame.signature?.size ?: 0)
             bytes[at] = checksum.toByte()
             bytes[at + 1] = (checksum ushr 8).toByte()
         }
@@ -112,17 +112,17 @@ public class FrameEncoder(private val codec: MessageCodec = MessageCodec.Default
         requireByte("componentId", componentId)
         requireByte("incompatFlags", incompatFlags)
         requireByte("compatFlags", compatFlags)
-        require(messageId in 0..Wire.MAX_V2_MESSAGE_ID) { "messageId must be in 0..16777215, was $messageId" }
-        val header = if (version == 1) Wire.HEADER_V1 else Wire.HEADER_V2
-        val out = ByteArray(header + length + Wire.CHECKSUM + (signature?.size ?: 0))
+        require(messageId in 0..FrameLayout.MAX_V2_MESSAGE_ID) { "messageId must be in 0..16777215, was $messageId" }
+        val header = if (version == 1) FrameLayout.HEADER_V1 else FrameLayout.HEADER_V2
+        val out = ByteArray(header + length + FrameLayout.CHECKSUM + (signature?.size ?: 0))
         var i = 0
         fun put(value: Int) {
             out[i++] = value.toByte()
         }
         if (version == 1) {
-            put(Wire.MAGIC_V1); put(length); put(sequence); put(systemId); put(componentId); put(messageId)
+            put(FrameLayout.MAGIC_V1); put(length); put(sequence); put(systemId); put(componentId); put(messageId)
         } else {
-            put(Wire.MAGIC_V2); put(length); put(incompatFlags); put(compatFlags); put(sequence)
+            put(FrameLayout.MAGIC_V2); put(length); put(incompatFlags); put(compatFlags); put(sequence)
             put(systemId); put(componentId); put(messageId); put(messageId ushr 8); put(messageId ushr 16)
         }
         payload.copyInto(out, i, 0, length)

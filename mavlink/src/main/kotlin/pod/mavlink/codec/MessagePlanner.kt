@@ -67,7 +67,7 @@ internal object MessagePlanner {
             offset += field.size
             field
         }
-        require(offset <= Wire.MAX_PAYLOAD) { "${messageClass.name} payload is $offset bytes, more than 255" }
+        require(offset <= FrameLayout.MAX_PAYLOAD) { "${messageClass.name} payload is $offset bytes, more than 255" }
         return MessagePlan(
             messageClass = messageClass,
             id = info.id,

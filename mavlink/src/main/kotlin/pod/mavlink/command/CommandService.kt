@@ -22,8 +22,8 @@ import pod.mavlink.run
  */
 public class CommandService internal constructor(
     private val vehicle: MavlinkVehicle,
-    /** Timeouts of every command to this vehicle. */
-    public var timing: CommandTiming = CommandTiming(),
+    /** Timeouts of every command to this vehicle ([pod.mavlink.VehicleTiming.commands]). */
+    public val timing: CommandTiming,
 ) {
     private val locks = HashMap<Int, Mutex>()
 
@@ -56,7 +56,7 @@ public class CommandService internal constructor(
     private suspend fun exchange(command: VehicleCommand, inProgress: (Int?) -> Unit): CommandReply {
         val identity = vehicle.identity.value
         val ourSystem = vehicle.station.config.systemId
-        val machine = CommandTransaction(command, timing, vehicle.roundTrips.command(timing), vehicle.lastHeartbeat.elapsedNow().inWholeNanoseconds)
+        val machine = CommandTransaction(command, timing, vehicle.roundTrips.command, vehicle.lastHeartbeat.elapsedNow().inWholeNanoseconds)
         // Telemetry only tells that the vehicle is alive: forwarded at most every HEARD_EVERY.
         val heard = vehicle.clock.markNow()
         var heardForwarded = Long.MIN_VALUE / 4

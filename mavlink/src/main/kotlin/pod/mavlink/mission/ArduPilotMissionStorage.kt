@@ -1,6 +1,7 @@
 package pod.mavlink.mission
 
 import kotlin.math.abs
+import pod.mavlink.MavFrames
 import pod.mavlink.command.MavCommands.CONDITION_DELAY
 import pod.mavlink.command.MavCommands.CONDITION_YAW
 import pod.mavlink.command.MavCommands.DO_CHANGE_SPEED
@@ -57,7 +58,7 @@ public object ArduPilotMissionStorage {
         return if (item.command in LOCATION_COMMANDS) {
             base.copy(frame = storedFrame(item.frame), z = (item.z * 100f).toInt() / 100f)
         } else {
-            base.copy(frame = 0, x = 0, y = 0, z = 0f)
+            base.copy(frame = MavFrames.GLOBAL, x = 0, y = 0, z = 0f)
         }
     }
 
@@ -135,9 +136,9 @@ public object ArduPilotMissionStorage {
 
     /** `relative_alt` / `terrain_alt` flags of the stored location, as frames again. */
     private fun storedFrame(frame: Int): Int = when (frame) {
-        3, 6 -> 3 // MAV_FRAME_GLOBAL_RELATIVE_ALT(_INT)
-        10, 11 -> 10 // MAV_FRAME_GLOBAL_TERRAIN_ALT(_INT)
-        else -> 0 // MAV_FRAME_MISSION, GLOBAL, GLOBAL_INT: absolute
+        MavFrames.GLOBAL_RELATIVE_ALT, MavFrames.GLOBAL_RELATIVE_ALT_INT -> MavFrames.GLOBAL_RELATIVE_ALT
+        MavFrames.GLOBAL_TERRAIN_ALT, MavFrames.GLOBAL_TERRAIN_ALT_INT -> MavFrames.GLOBAL_TERRAIN_ALT
+        else -> MavFrames.GLOBAL // MISSION, GLOBAL, GLOBAL_INT: absolute
     }
 
     // C's float-to-integer conversion truncates toward zero (undefined out of range: clamped here).

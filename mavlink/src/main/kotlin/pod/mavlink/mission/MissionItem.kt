@@ -68,13 +68,10 @@ public data class MissionItem(
 
     public companion object {
         /** MAV_FRAME numbers whose x/y are latitude/longitude. */
-        public val GLOBAL_FRAMES: Set<Int> = setOf(
-            MavFrames.GLOBAL, MavFrames.GLOBAL_RELATIVE_ALT, MavFrames.GLOBAL_INT, MavFrames.GLOBAL_RELATIVE_ALT_INT,
-            MavFrames.GLOBAL_TERRAIN_ALT, MavFrames.GLOBAL_TERRAIN_ALT_INT,
-        )
+        public val GLOBAL_FRAMES: Set<Int> = MavFrames.GLOBAL_FRAMES
 
         /** MAV_FRAME numbers whose x/y are local positions in metres (sent × 10⁴). */
-        public val LOCAL_FRAMES: Set<Int> = setOf(1, 4, 7, 8, 9, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21)
+        public val LOCAL_FRAMES: Set<Int> = MavFrames.LOCAL_FRAMES
 
         /** MAV_FRAME_MISSION: x/y are plain parameters. */
         public const val FRAME_MISSION: Int = MavFrames.MISSION

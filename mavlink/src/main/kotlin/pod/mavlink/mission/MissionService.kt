@@ -1,10 +1,7 @@
 package pod.mavlink.mission
 
-import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.TimeMark
 import kotlinx.coroutines.channels.Channel
-import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.buffer
 import kotlinx.coroutines.flow.channelFlow
@@ -21,6 +18,7 @@ import pod.mavlink.command.CommandRejected
 import pod.mavlink.command.CommandResult
 import pod.mavlink.command.MavCommands
 import pod.mavlink.command.VehicleCommand
+import pod.mavlink.protocol.RetryPolicy
 import pod.mavlink.run
 
 /**
@@ -35,13 +33,38 @@ import pod.mavlink.run
  */
 public class MissionService internal constructor(
     private val vehicle: MavlinkVehicle,
-    /** Timeouts and retries of every transfer of this vehicle. */
-    public var timing: TransferTiming = TransferTiming(),
+    /** Timeouts and retries of every transfer of this vehicle ([pod.mavlink.VehicleTiming.transfers]). */
+    public val timing: TransferTiming,
 ) {
     private val exclusive = Mutex()
     @Volatile private var servesInOrder = false
     private val appeared = vehicle.clock.markNow() // made with the vehicle, on its first heartbeat
     private val unfinished: MutableSet<MissionType> = java.util.concurrent.ConcurrentHashMap.newKeySet()
+
+    /**
+     * Uploads refused with MAV_MISSION_NO_SPACE within [TransferTiming.serviceStartup] of the
+     * vehicle's appearance: a vehicle just booted (ArduPilot) has not started its mission storage
+     * yet. After the window the refusal stands.
+     */
+    private val serviceStarting = RetryPolicy(
+        SERVICE_RETRY_PAUSE, timing.serviceStartup, RetryPolicy.LastPause.CUT_TO_WINDOW,
+        retried = { e -> if (e is MissionRejected && e.result == MissionResult.NO_SPACE) "the vehicle's mission storage to start" else null },
+    )
+
+    /**
+     * Transfers refused with DENIED, for [TransferTiming.deniedRetry] from the first refusal:
+     * ArduPilot refuses every transfer while it holds an unfinished upload (one abandoned by this
+     * process or by an earlier one: it ignores the cancelling MISSION_ACK and drops the upload
+     * after 8 s without items). A refusal of [operation] that outlasts the wait is thrown, saying so.
+     */
+    private fun uploadHeld(operation: String) = RetryPolicy(
+        SERVICE_RETRY_PAUSE, timing.deniedRetry, RetryPolicy.LastPause.CUT_TO_WINDOW,
+        retried = { e -> if (e is MissionRejected && e.result == MissionResult.DENIED) STILL_HOLDING else null },
+        giveUp = { e, reason ->
+            val refusal = e as MissionRejected
+            MissionRejected(refusal.type, refusal.result, refusal.seq, operation, "$reason (refused for ${timing.deniedRetry.toReadable()})")
+        },
+    )
 
     /**
      * Uploads [items] as the vehicle's [type] list. When the vehicle's final acknowledgement never
@@ -86,11 +109,11 @@ public class MissionService internal constructor(
             // Marked until the vehicle confirms the whole list: an upload that fails or is cancelled
             // half-way may leave it half-written (ArduPilot stores each item as it arrives).
             unfinished += type
-            whileHeld(type, "upload", progress) {
+            whileHeld("upload", progress) {
                 untilServiceUp {
                     val identity = vehicle.identity.value
                     val machine = UploadConfirm(
-                        type, items, timing, vehicle.roundTrips.mission(timing), partialFrom,
+                        type, items, timing, vehicle.roundTrips.mission(), partialFrom,
                         inOrder = inOrder(), ardupilot = identity.autopilot == Autopilot.ARDUPILOT,
                         fixedWing = identity.type == VehicleType.FIXED_WING,
                     )
@@ -114,33 +137,12 @@ public class MissionService internal constructor(
         if (type in unfinished) throw MissionHalfWritten(type, action)
     }
 
-    /**
-     * Runs [attempt] again while the vehicle refuses it with MAV_MISSION_NO_SPACE within
-     * [TransferTiming.serviceStartup] of its appearance: a vehicle just booted (ArduPilot) has not
-     * started its mission storage yet. After the window the refusal stands.
-     */
-    private suspend fun <T> untilServiceUp(attempt: suspend () -> T): T =
-        retryingRefusal(MissionResult.NO_SPACE, { timing.serviceStartup - appeared.elapsedNow() }, attempt)
-
-    /**
-     * Runs [attempt] again, pausing [SERVICE_RETRY_PAUSE] between tries, while the vehicle refuses
-     * it with [result] and [left] (read after each refusal) is still positive.
-     */
-    private suspend fun <T> retryingRefusal(result: MissionResult, left: () -> Duration, attempt: suspend () -> T): T {
-        while (true) {
-            try {
-                return attempt()
-            } catch (e: MissionRejected) {
-                val remaining = left()
-                if (e.result != result || remaining <= Duration.ZERO) throw e
-                delay(minOf(SERVICE_RETRY_PAUSE, remaining))
-            }
-        }
-    }
+    /** Runs [attempt], waiting out the refusals of a mission storage still starting ([serviceStarting]). */
+    private suspend fun <T> untilServiceUp(attempt: suspend () -> T): T = serviceStarting.run(vehicle.clock, appeared, attempt = attempt)
 
     /** Downloads the vehicle's [type] list; [downloading] does the same and reports progress. */
     public suspend fun download(type: MissionType = MissionType.MISSION): List<MissionItem> =
-        exclusive.withLock { whileHeld(type, "download", {}) { downloadLocked(type) {} } }
+        exclusive.withLock { whileHeld("download", {}) { downloadLocked(type) {} } }
 
     /**
      * [download] as a flow of progress: collecting it runs the download; the last element carries
@@ -148,7 +150,7 @@ public class MissionService internal constructor(
      */
     public fun downloading(type: MissionType = MissionType.MISSION): Flow<TransferProgress> = channelFlow {
         val report = changes { trySend(it) }
-        val items = exclusive.withLock { whileHeld(type, "download", report) { downloadLocked(type, report) } }
+        val items = exclusive.withLock { whileHeld("download", report) { downloadLocked(type, report) } }
         send(TransferProgress(items.size, items.size, items))
     }.buffer(Channel.UNLIMITED)
 
@@ -164,26 +166,15 @@ public class MissionService internal constructor(
     }
 
     /**
-     * Runs [attempt] again while the vehicle answers DENIED, for [TransferTiming.deniedRetry] from
-     * the first refusal, telling [report] once why it waits: ArduPilot refuses every transfer while
-     * it holds an unfinished upload (one abandoned by this process or by an earlier one: it ignores
-     * the cancelling MISSION_ACK and drops the upload after 8 s without items). A refusal that
-     * outlasts the wait is thrown, saying so.
+     * Runs [attempt] (an [operation]), waiting out DENIED while the vehicle holds an unfinished
+     * upload ([uploadHeld]), and tells [report] once why it waits.
      */
-    private suspend fun <T> whileHeld(type: MissionType, operation: String, report: (TransferProgress) -> Unit, attempt: suspend () -> T): T {
-        var since: TimeMark? = null
-        try {
-            return retryingRefusal(MissionResult.DENIED, {
-                val first = since ?: vehicle.clock.markNow().also {
-                    since = it
-                    report(TransferProgress(0, 0, waiting = STILL_HOLDING))
-                }
-                timing.deniedRetry - first.elapsedNow()
-            }, attempt)
-        } catch (e: MissionRejected) {
-            if (e.result != MissionResult.DENIED || since == null) throw e
-            throw MissionRejected(e.type, e.result, e.seq, operation, "$STILL_HOLDING (refused for ${timing.deniedRetry.toReadable()})")
-        }
+    private suspend fun <T> whileHeld(operation: String, report: (TransferProgress) -> Unit, attempt: suspend () -> T): T {
+        var told = false
+        return uploadHeld(operation).run(vehicle.clock, from = null, onWait = { reason ->
+            if (!told) report(TransferProgress(0, 0, waiting = reason))
+            told = true
+        }, attempt = attempt)
     }
 
     /** Deletes the vehicle's [type] list. */
@@ -221,7 +212,7 @@ public class MissionService internal constructor(
     private fun inOrder() = servesInOrder || vehicle.identity.value.autopilot == Autopilot.PX4
 
     private suspend fun downloadLocked(type: MissionType, progress: (TransferProgress) -> Unit): List<MissionItem> {
-        val machine = MissionDownload(type, timing, inOrder(), vehicle.roundTrips.mission(timing))
+        val machine = MissionDownload(type, timing, inOrder(), vehicle.roundTrips.mission())
         try {
             return vehicle.run(machine, wire(type, cancellable = true)) { progress(machine.progress) }
         } finally {

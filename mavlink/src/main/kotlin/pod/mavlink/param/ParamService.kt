@@ -21,8 +21,8 @@ import pod.mavlink.run
  */
 public class ParamService internal constructor(
     private val vehicle: MavlinkVehicle,
-    /** Attempt timeouts and the silence after which an exchange fails. */
-    public var timing: CommandTiming = CommandTiming(),
+    /** Attempt timeouts and the silence after which an exchange fails ([pod.mavlink.VehicleTiming.params]). */
+    public val timing: CommandTiming,
 ) {
     private val exclusive = Mutex()
     private val types = HashMap<String, ParamType>()
@@ -61,7 +61,7 @@ public class ParamService internal constructor(
     private suspend fun exchange(name: String, writing: Double?, type: ParamType?): Parameter {
         val identity = vehicle.identity.value
         val encoding = encoding
-        val machine = ParamExchange(name, writing, type, timing, vehicle.roundTrips.param(timing))
+        val machine = ParamExchange(name, writing, type, timing, vehicle.roundTrips.param)
         val result = vehicle.run(
             machine,
             Wire<Parameter, Unit>(

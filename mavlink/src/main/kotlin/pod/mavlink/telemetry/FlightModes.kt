@@ -8,7 +8,7 @@ import pod.core.vehicle.VehicleType
  * Names of autopilot flight modes, from the custom_mode number a HEARTBEAT carries and back.
  *
  * ArduPilot numbers modes per vehicle family (Copter and Plane tables here); PX4 packs a main mode
- * into bits 16..23 and a sub-mode of AUTO or POSCTL into bits 24..31, named "MAIN.SUB" here
+ * and a sub-mode of AUTO or POSCTL into one number ([Px4CustomMode]), named "MAIN.SUB" here
  * ("AUTO.LOITER", "POSCTL.ORBIT").
  */
 public object FlightModes {
@@ -56,9 +56,9 @@ public object FlightModes {
             val sub = parts.getOrNull(1)?.let { s -> px4SubModes(main).entries.firstOrNull { it.value == s }?.key }
             when {
                 main == null -> null
-                parts.size == 1 -> main.toLong() shl 16
+                parts.size == 1 -> Px4CustomMode.pack(main)
                 sub == null || parts.size > 2 -> null
-                else -> (main.toLong() shl 16) or (sub.toLong() shl 24)
+                else -> Px4CustomMode.pack(main, sub)
             }
         }
         else -> arduTable(type).entries.firstOrNull { it.value == name.uppercase() }?.key?.toLong()
@@ -117,8 +117,8 @@ public object FlightModes {
 
     private fun nameOf(autopilot: Autopilot, type: VehicleType, customMode: Long): String? = when (autopilot) {
         Autopilot.PX4 -> {
-            val main = ((customMode shr 16) and 0xFF).toInt()
-            val sub = ((customMode shr 24) and 0xFF).toInt()
+            val main = Px4CustomMode.main(customMode)
+            val sub = Px4CustomMode.sub(customMode)
             val mainName = px4Main[main]
             when {
                 mainName == null -> null

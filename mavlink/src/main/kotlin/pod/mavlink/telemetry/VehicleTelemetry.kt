@@ -46,7 +46,7 @@ public class VehicleTelemetry internal constructor() {
     private val _armed = MutableStateFlow(false)
     private val _landedState = MutableStateFlow(LandedState.UNDEFINED)
     private val _gps = MutableStateFlow<GpsStatus?>(null)
-    private val _systemStatus = MutableStateFlow(0)
+    private val _systemStatus = MutableStateFlow(pod.mavlink.MavStates.UNINIT)
     private val _linkQuality = MutableStateFlow(LinkQuality(0, 0))
     private val _missionCurrent = MutableStateFlow<Int?>(null)
     private val _rangefinder = MutableStateFlow<Distance?>(null)
@@ -78,7 +78,7 @@ public class VehicleTelemetry internal constructor() {
     /** GPS fix and satellites (GPS_RAW_INT). */
     public val gps: StateFlow<GpsStatus?> = _gps.asStateFlow()
 
-    /** MAV_STATE number from the HEARTBEAT (0 uninit, 1 boot, 3 standby, 4 active, …). */
+    /** MAV_STATE number from the HEARTBEAT, named in [pod.mavlink.MavStates] (0 uninit, 1 boot, 3 standby, 4 active, …). */
     public val systemStatus: StateFlow<Int> = _systemStatus.asStateFlow()
 
     /** Frames received and lost, from the vehicle's sequence numbers. */

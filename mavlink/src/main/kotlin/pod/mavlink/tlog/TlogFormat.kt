@@ -1,6 +1,6 @@
 package pod.mavlink.tlog
 
-import pod.mavlink.codec.Wire
+import pod.mavlink.codec.FrameLayout
 
 /**
  * One tlog record: when a frame was sent or received, and the frame's wire bytes.
@@ -62,14 +62,14 @@ internal object TlogFrames {
         val magic = bytes[offset].toInt() and 0xFF
         val payload = bytes[offset + 1].toInt() and 0xFF
         return when (magic) {
-            Wire.MAGIC_V1 -> Result.Length(Wire.HEADER_V1 + payload + Wire.CHECKSUM)
-            Wire.MAGIC_V2 -> {
+            FrameLayout.MAGIC_V1 -> Result.Length(FrameLayout.HEADER_V1 + payload + FrameLayout.CHECKSUM)
+            FrameLayout.MAGIC_V2 -> {
                 val incompat = bytes[offset + 2].toInt() and 0xFF
-                if (incompat and Wire.FLAG_SIGNED.inv() != 0) {
+                if (incompat and FrameLayout.FLAG_SIGNED.inv() != 0) {
                     Result.NotAFrame("unknown MAVLink 2 incompatibility flags 0x%02x".format(incompat))
                 } else {
-                    val signature = if (incompat and Wire.FLAG_SIGNED != 0) Wire.SIGNATURE else 0
-                    Result.Length(Wire.HEADER_V2 + payload + Wire.CHECKSUM + signature)
+                    val signature = if (incompat and FrameLayout.FLAG_SIGNED != 0) FrameLayout.SIGNATURE else 0
+                    Result.Length(FrameLayout.HEADER_V2 + payload + FrameLayout.CHECKSUM + signature)
                 }
             }
             else -> Result.NotAFrame("magic byte 0x%02x is neither 0xFE (MAVLink 1) nor 0xFD (MAVLink 2)".format(magic))

@@ -2,7 +2,7 @@ package pod.mavlink.tlog
 
 import pod.mavlink.codec.Crc
 import pod.mavlink.codec.MessageCodec
-import pod.mavlink.codec.Wire
+import pod.mavlink.codec.FrameLayout
 import java.io.BufferedInputStream
 import java.io.IOException
 import java.io.InputStream
@@ -30,7 +30,7 @@ public class TlogReader(input: InputStream, private val codec: MessageCodec = Me
         if (got == 0) return null
         if (got < head.size) {
             // A frame is at least a MAVLink 1 header and checksum: anything shorter is cut off.
-            throw TlogTruncated(start, TlogFrames.TIMESTAMP + Wire.HEADER_V1 + Wire.CHECKSUM, got)
+            throw TlogTruncated(start, TlogFrames.TIMESTAMP + FrameLayout.HEADER_V1 + FrameLayout.CHECKSUM, got)
         }
         var timestamp = 0L
         for (i in 0 until TlogFrames.TIMESTAMP) timestamp = (timestamp shl 8) or (head[i].toLong() and 0xFF)
@@ -56,8 +56,8 @@ public class TlogReader(input: InputStream, private val codec: MessageCodec = Me
     }
 
     private fun checkCrc(frame: ByteArray, start: Long) {
-        val v2 = (frame[0].toInt() and 0xFF) == Wire.MAGIC_V2
-        val header = if (v2) Wire.HEADER_V2 else Wire.HEADER_V1
+        val v2 = (frame[0].toInt() and 0xFF) == FrameLayout.MAGIC_V2
+        val header = if (v2) FrameLayout.HEADER_V2 else FrameLayout.HEADER_V1
         val payload = frame[1].toInt() and 0xFF
         val messageId = if (v2) {
             (frame[7].toInt() and 0xFF) or ((frame[8].toInt() and 0xFF) shl 8) or ((frame[9].toInt() and 0xFF) shl 16)

@@ -30,7 +30,7 @@ internal class FrameDecoderTest : FunSpec({
         val frames = mutableListOf<String>()
         for (chunk in chunks) {
             feed(chunk) { frames += encoder.encode(it).toHex() }
-            withClue("pending bytes after a feed") { pendingBytes shouldBeLessThan Wire.MAX_FRAME }
+            withClue("pending bytes after a feed") { pendingBytes shouldBeLessThan FrameLayout.MAX_FRAME }
         }
         return frames
     }
@@ -76,7 +76,7 @@ internal class FrameDecoderTest : FunSpec({
     test("random garbage never throws, keeps the buffer under one frame, and 280 clean bytes resynchronise") {
         checkAll(300, Arb.int(0..3000), Arb.list(TestFrames.arb, 1..4), Arb.long()) { garbageSize, wires, seed ->
             val random = Random(seed)
-            val stream = TestFrames.garbage(random, garbageSize) + TestFrames.clean(random, Wire.MAX_FRAME) + wires.concat()
+            val stream = TestFrames.garbage(random, garbageSize) + TestFrames.clean(random, FrameLayout.MAX_FRAME) + wires.concat()
             val decoder = FrameDecoder(codec)
             val chunked = decoder.collect(TestFrames.split(stream, random))
             chunked shouldEndWith wires.map { it.toHex() }
@@ -92,7 +92,7 @@ internal class FrameDecoderTest : FunSpec({
             val random = Random(seed)
             val mutated = wires.map { wire -> if (random.nextBoolean()) mutate(wire, random) else wire }
             val tail = heartbeat(77)
-            val stream = mutated.concat() + TestFrames.clean(random, Wire.MAX_FRAME) + tail
+            val stream = mutated.concat() + TestFrames.clean(random, FrameLayout.MAX_FRAME) + tail
             val decoder = FrameDecoder(codec)
             decoder.collect(TestFrames.split(stream, random)) shouldEndWith listOf(tail.toHex())
             decoder.pendingBytes shouldBe 0
@@ -105,11 +105,11 @@ internal class FrameDecoderTest : FunSpec({
             val message = TestMessages.random(gcsMessages.random(random), random)
             val wire = encoder.encode(message, 1, 1, 0)
             val corrupt = wire.copyOf()
-            val at = random.nextInt(Wire.HEADER_V2, wire.size) // payload or checksum
+            val at = random.nextInt(FrameLayout.HEADER_V2, wire.size) // payload or checksum
             corrupt[at] = (corrupt[at].toInt() xor (1 + random.nextInt(255))).toByte()
             val tail = heartbeat(5)
             val decoder = FrameDecoder(codec)
-            val frames = decoder.collect(listOf(corrupt + TestFrames.clean(random, Wire.MAX_FRAME) + tail))
+            val frames = decoder.collect(listOf(corrupt + TestFrames.clean(random, FrameLayout.MAX_FRAME) + tail))
             decoder.stats.badCrc shouldBeGreaterThanOrEqual 1
             frames shouldEndWith listOf(tail.toHex())
             frames.contains(wire.toHex()) shouldBe false
@@ -178,7 +178,7 @@ internal class FrameDecoderTest : FunSpec({
             for (chunk in TestFrames.split(wire, random)) decoder.feed(chunk) { frames += it }
             frames shouldHaveSize 1
             val frame = frames.single()
-            frame.incompatFlags shouldBe Wire.FLAG_SIGNED
+            frame.incompatFlags shouldBe FrameLayout.FLAG_SIGNED
             frame.signature?.toHex() shouldBe wire.copyOfRange(wire.size - 13, wire.size).toHex()
             codec.decode(frame) shouldBe codec.decode(frame.withoutSignature())
             encoder.encode(frame).toHex() shouldBe wire.toHex()

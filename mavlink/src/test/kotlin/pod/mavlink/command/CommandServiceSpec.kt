@@ -29,9 +29,11 @@ import pod.mavlink.link.MemoryNetwork
 import pod.mavlink.GroundStationConfig
 import pod.mavlink.MavlinkEnums
 import pod.mavlink.MavlinkVehicle
+import pod.mavlink.VehicleTiming
 import pod.mavlink.param.ParamEncoding
 import pod.mavlink.param.ParamTimeout
 import pod.mavlink.param.ParamType
+import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 
@@ -39,9 +41,13 @@ private const val ARM = 400
 
 private fun ack(command: Int, result: CommandResult, progress: Int? = null, target: Int = 255) = CommandWire.ack(command, result, target, 190, progress)
 
+/** A station's configuration with no stream or payload requests, and [timing] for its vehicles. */
+private fun quiet(timing: VehicleTiming = VehicleTiming(), lostAfter: Duration = 3.seconds) =
+    GroundStationConfig(streamRates = emptyMap(), requestPayloads = false, lostAfter = lostAfter, vehicleTiming = timing)
+
 /** A ground station and one scripted vehicle in virtual time: the commands' timeouts and resends are the subject, not the socket. */
 private fun withVehicle(
-    config: GroundStationConfig = GroundStationConfig(streamRates = emptyMap(), requestPayloads = false),
+    config: GroundStationConfig = quiet(),
     autopilot: Int = MavlinkEnums.MAV_AUTOPILOT_ARDUPILOTMEGA,
     answer: suspend (Any) -> List<Any>,
     block: suspend CoroutineScope.(MavlinkVehicle, ScriptedVehicle) -> Unit,
@@ -50,8 +56,7 @@ private fun withVehicle(
 class CommandServiceSpec : StringSpec({
 
     "a command whose first sends are lost is resent with confirmation 1, 2 and accepted" {
-        withVehicle(answer = { m -> if (m is CommandLong && m.confirmation() >= 2) listOf(ack(m.command().value(), CommandResult.ACCEPTED)) else emptyList() }) { v, sim ->
-            v.commands.timing = CommandTiming(initialAttemptTimeout = 100.milliseconds)
+        withVehicle(quiet(VehicleTiming(commands = CommandTiming(initialAttemptTimeout = 100.milliseconds))), answer = { m -> if (m is CommandLong && m.confirmation() >= 2) listOf(ack(m.command().value(), CommandResult.ACCEPTED)) else emptyList() }) { v, sim ->
             v.commands.send(VehicleCommand(ARM, param1 = 1f)).result shouldBe CommandResult.ACCEPTED
             sim.commands.value shouldBe listOf(ARM to 0, ARM to 1, ARM to 2)
         }
@@ -116,10 +121,9 @@ class CommandServiceSpec : StringSpec({
     }
 
     "acknowledgements addressed to another ground station are not ours" {
-        withVehicle(answer = { m ->
+        withVehicle(quiet(VehicleTiming(commands = CommandTiming(initialAttemptTimeout = 100.milliseconds))), answer = { m ->
             if (m !is CommandLong) emptyList() else if (m.confirmation() == 0) listOf(ack(ARM, CommandResult.DENIED, target = 254)) else listOf(ack(ARM, CommandResult.ACCEPTED))
         }) { v, _ ->
-            v.commands.timing = CommandTiming(initialAttemptTimeout = 100.milliseconds)
             v.commands.send(VehicleCommand(ARM)).result shouldBe CommandResult.ACCEPTED
         }
     }
@@ -133,23 +137,20 @@ class CommandServiceSpec : StringSpec({
     }
 
     "a vehicle that never answers fails the command within its timeout; one that falls silent is lost" {
-        withVehicle(
-            config = GroundStationConfig(streamRates = emptyMap(), requestPayloads = false, lostAfter = 500.milliseconds),
-            answer = { emptyList() },
-        ) { v, sim ->
-            v.commands.timing = CommandTiming(timeout = 1.seconds, initialAttemptTimeout = 100.milliseconds, maxAttemptTimeout = 300.milliseconds)
+        val quick = CommandTiming(timeout = 1.seconds, initialAttemptTimeout = 100.milliseconds, maxAttemptTimeout = 300.milliseconds)
+        withVehicle(config = quiet(VehicleTiming(commands = quick), lostAfter = 500.milliseconds), answer = { emptyList() }) { v, _ ->
             val error = shouldThrow<CommandTimeout> { withTimeout(3.seconds) { v.commands.send(VehicleCommand(ARM)) } }
             error.waitingFor shouldBe "COMMAND_ACK"
             (error.attempts >= 4) shouldBe true
-            v.commands.timing = CommandTiming(timeout = 60.seconds)
+        }
+        withVehicle(config = quiet(VehicleTiming(commands = CommandTiming(timeout = 60.seconds)), lostAfter = 500.milliseconds), answer = { emptyList() }) { v, sim ->
             sim.silence()
             shouldThrow<VehicleLost> { withTimeout(5.seconds) { v.commands.send(VehicleCommand(ARM)) } }.message shouldContain "MAV_CMD_COMPONENT_ARM_DISARM"
         }
     }
 
     "a command left unanswered is shown as awaited while Pod resends it, and no longer once it ends" {
-        withVehicle(answer = { emptyList() }) { v, _ ->
-            v.commands.timing = CommandTiming(timeout = 4.seconds)
+        withVehicle(quiet(VehicleTiming(commands = CommandTiming(timeout = 4.seconds))), answer = { emptyList() }) { v, _ ->
             val seen = java.util.concurrent.CopyOnWriteArrayList<pod.mavlink.Awaiting>()
             val watching = launch { v.awaiting.collect { if (it != null) seen += it } }
             shouldThrow<CommandTimeout> { v.commands.send(VehicleCommand(ARM)) }.message shouldContain Regex("after \\d+ sends and 4\\.\\d s waiting")
@@ -168,7 +169,8 @@ class CommandServiceSpec : StringSpec({
         val types = mapOf("MAV_SYS_ID" to ParamType.INT32, "MPC_XY_CRUISE" to ParamType.REAL32)
         fun value(name: String) = ParamValue.builder().paramId(name).paramType(EnumValue.create<MavParamType>(types.getValue(name).mavValue))
             .paramValue(ParamEncoding.BYTEWISE.encode(stored.getValue(name), types.getValue(name))).paramCount(2).paramIndex(types.keys.indexOf(name)).build()
-        withVehicle(autopilot = MavlinkEnums.MAV_AUTOPILOT_PX4, answer = { m ->
+        val quickParams = CommandTiming(timeout = 1.seconds, initialAttemptTimeout = 100.milliseconds)
+        withVehicle(quiet(VehicleTiming(params = quickParams)), autopilot = MavlinkEnums.MAV_AUTOPILOT_PX4, answer = { m ->
             when (m) {
                 is ParamRequestRead -> if (m.paramId() in stored) listOf(value(m.paramId())) else emptyList()
                 is ParamSet -> if (m.paramId() in stored) {
@@ -183,7 +185,6 @@ class CommandServiceSpec : StringSpec({
             v.params.write("MAV_SYS_ID", 16_777_217.0).value shouldBe 16_777_217.0 // not representable as a float value
             stored["MAV_SYS_ID"] shouldBe 16_777_217.0
             v.params.write("MPC_XY_CRUISE", 7.5).type shouldBe ParamType.REAL32
-            v.params.timing = CommandTiming(timeout = 1.seconds, initialAttemptTimeout = 100.milliseconds)
             shouldThrow<ParamTimeout> { v.params.read("NO_SUCH_PARAM") }.name shouldBe "NO_SUCH_PARAM"
         }
     }

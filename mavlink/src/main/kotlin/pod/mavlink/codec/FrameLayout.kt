@@ -1,7 +1,7 @@
 package pod.mavlink.codec
 
 /** Sizes and markers of MAVLink 1 and 2 frames, as the spec fixes them. */
-internal object Wire {
+internal object FrameLayout {
     const val MAGIC_V1: Int = 0xFE
     const val MAGIC_V2: Int = 0xFD
 
