@@ -209,12 +209,12 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
     private fun missionCurrent(seq: Int): MissionCurrent = MissionCurrent.builder().seq(seq).total(missionTotal()).build()
 
     private fun vfrHud(s: SimState): VfrHud = VfrHud.builder()
-        .airspeed(s.airspeed.toFloat())
-        .groundspeed(s.groundSpeed.toFloat())
-        .heading(s.headingDeg.roundToInt().mod(360))
+        .airspeed(s.airspeed.metersPerSecond.toFloat())
+        .groundspeed(s.groundSpeed.metersPerSecond.toFloat())
+        .heading(s.heading.degrees.roundToInt().mod(360))
         .throttle(s.throttle)
         .alt(s.location.altitude.meters.toFloat())
-        .climb(s.climbRate.toFloat())
+        .climb(s.climbRate.metersPerSecond.toFloat())
         .build()
 
     fun heartbeat(s: SimState): Heartbeat = Heartbeat.builder()
@@ -258,7 +258,7 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
 
     private fun attitude(s: SimState): Attitude = Attitude.builder()
         .timeBootMs(timeBootMs())
-        .yaw(Math.toRadians(if (s.headingDeg > 180) s.headingDeg - 360 else s.headingDeg).toFloat())
+        .yaw(Math.toRadians(s.heading.degrees.let { if (it > 180) it - 360 else it }).toFloat())
         .build()
 
     private fun globalPosition(s: SimState): GlobalPositionInt = GlobalPositionInt.builder()
@@ -267,10 +267,10 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
         .lon(e7(s.location.longitude))
         .alt((s.location.altitude.meters * 1000).roundToInt())
         .relativeAlt((s.relativeAltitude.meters * 1000).roundToInt())
-        .vx((s.velocityNed.first * 100).roundToInt())
-        .vy((s.velocityNed.second * 100).roundToInt())
-        .vz((s.velocityNed.third * 100).roundToInt())
-        .hdg((s.headingDeg * 100).roundToInt().mod(36000))
+        .vx((s.velocityNed.first.metersPerSecond * 100).roundToInt())
+        .vy((s.velocityNed.second.metersPerSecond * 100).roundToInt())
+        .vz((s.velocityNed.third.metersPerSecond * 100).roundToInt())
+        .hdg((s.heading.degrees * 100).roundToInt().mod(36000))
         .build()
 
     /** Nothing before the estimator's origin (and so home) is set, as GCS_MAVLINK::send_home_position. */

@@ -3,6 +3,7 @@ package pod.sim.autopilot
 import pod.core.vehicle.Severity
 import pod.core.units.Location
 import pod.core.units.m
+import pod.mavlink.MavFrames
 import pod.mavlink.command.MavCommands.CONDITION_DELAY
 import pod.mavlink.command.MavCommands.DO_CHANGE_SPEED
 import pod.mavlink.command.MavCommands.DO_DIGICAM_CONTROL
@@ -290,7 +291,7 @@ internal class MissionRunner(private val ap: FlightControl) {
         val base = if ((it.x == 0 && it.y == 0) || !it.isGlobal) here else Location(it.latitude, it.longitude)
         val alt = when {
             it.z == 0f && profile.zeroAltitudeMeansCurrent(it) -> here.altitude.meters
-            it.frame == 0 || it.frame == 5 -> it.z.toDouble()
+            it.frame == MavFrames.GLOBAL || it.frame == MavFrames.GLOBAL_INT -> it.z.toDouble()
             it.frame in RELATIVE_FRAMES -> ap.home.altitude.meters + it.z
             else -> here.altitude.meters
         }
@@ -304,6 +305,6 @@ internal class MissionRunner(private val ap: FlightControl) {
         )
         private const val MAX_ITEMS_PER_STEP = 64
         /** GLOBAL_RELATIVE_ALT, its _INT form and the terrain frames (flown here as relative). */
-        private val RELATIVE_FRAMES = setOf(3, 6, 10, 11)
+        private val RELATIVE_FRAMES = setOf(MavFrames.GLOBAL_RELATIVE_ALT, MavFrames.GLOBAL_RELATIVE_ALT_INT, MavFrames.GLOBAL_TERRAIN_ALT, MavFrames.GLOBAL_TERRAIN_ALT_INT)
     }
 }

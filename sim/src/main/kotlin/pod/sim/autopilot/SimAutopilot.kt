@@ -19,6 +19,7 @@ import pod.sim.flight.Performance
 import pod.sim.flight.atAltitude
 import pod.sim.flight.horizontalDistance
 import pod.sim.world.SimWorld
+import pod.core.units.Speed
 import pod.core.units.deg
 import pod.core.units.m
 import kotlin.time.Duration.Companion.seconds
@@ -116,10 +117,10 @@ internal class SimAutopilot(
     /** A snapshot for telemetry. */
     fun state(): SimState = SimState(
         location = body.location, home = home,
-        velocityNed = Triple(body.velocityNorth, body.velocityEast, body.velocityDown),
-        headingDeg = body.heading, charge = charge, armed = armed, landedState = landedState(),
+        velocityNed = Triple(Speed(body.velocityNorth), Speed(body.velocityEast), Speed(body.velocityDown)),
+        heading = body.heading.deg, charge = charge, armed = armed, landedState = landedState(),
         customMode = FlightModes.customMode(autopilot, type, modeName) ?: 0, modeName = modeName,
-        airspeed = body.airspeed, throttle = body.throttle, missionCurrent = missionServer.current, positionReady = positionReady,
+        airspeed = Speed(body.airspeed), throttle = body.throttle, missionCurrent = missionServer.current, positionReady = positionReady,
         target = target(), groundAltitude = ground.m, time = time.seconds, crashed = crashed,
     )
 
@@ -286,7 +287,8 @@ internal class SimAutopilot(
     /**
      * Whether a take-off to [target] (AMSL) is done: a multirotor within 0.3 m of it, a plane within
      * 2 m, but neither lower than 1.5 m above the ground (a plane's take-off to PX4's default 2.5 m
-     * would otherwise end at 0.5 m, and the world's terrain check would end the flight).
+     * would otherwise end at 0.5 m, and the world's terrain check would end the flight). The
+     * tolerance is the airframe's, not a firmware's.
      */
     override fun takeoffReached(target: Double): Boolean =
         body.location.altitude.meters >= maxOf(target - if (profile.rotorcraft) 0.3 else 2.0, minOf(target, ground + 1.5))
@@ -297,7 +299,7 @@ internal class SimAutopilot(
     /** Holding here (see [ModeEntry.holdHere]). */
     override fun holdHere(braking: Double?): Activity = modes.holdHere(braking)
 
-    /** A return to launch with the profile's altitude and radius. */
+    /** A return to launch with the profile's altitude and radius, flown as the airframe flies (climb first and land, or circle). */
     override fun returnPlan(): ReturnPlan {
         val (alt, radius, clockwise) = profile.returnAltitude(params, home.altitude.meters, body.location.altitude.meters)
         return ReturnPlan(home, alt, profile.rotorcraft, radius, clockwise)

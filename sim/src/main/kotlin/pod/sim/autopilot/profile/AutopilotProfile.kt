@@ -43,6 +43,12 @@ internal sealed class AutopilotProfile {
     /** The mission-protocol behaviour of the family's vehicle side (storage, request style). */
     abstract val missionServerFlavor: MissionServerFlavor
 
+    /**
+     * Whether the mission server normalises stored items as the family does for a fixed wing
+     * (mavlink's MissionServer `fixedWing`): the firmware's plane build, whatever the airframe.
+     */
+    val missionServerFixedWing: Boolean get() = !rotorcraft
+
     // ---- Modes -------------------------------------------------------------------------------
 
     /** The mode it boots in. */
