@@ -72,6 +72,9 @@ internal interface FlightView {
     /** The mission's current item. */
     val missionCurrent: Int
 
+    /** ArduPlane GUIDED's loiter radius from a DO_REPOSITION, m (0: the parameter's). */
+    val guidedRadius: Double
+
     /** Speeds, rates and radii it flies with now. */
     fun performance(): Performance
 
@@ -99,8 +102,6 @@ internal interface FlightControl : FlightView {
     /** DO_CHANGE_SPEED's overrides. */
     val speeds: SpeedOverrides
 
-    /** ArduPlane GUIDED's loiter radius from a DO_REPOSITION, m (0: the parameter's). */
-    var guidedRadius: Double
 
     /** The mission it flies in AUTO. */
     val mission: MissionRunner
@@ -110,6 +111,9 @@ internal interface FlightControl : FlightView {
 
     /** Its geofence. */
     val fence: Geofence
+
+    /** Sets GUIDED's loiter radius to [radius] m until the vehicle leaves the mode. */
+    fun setGuidedRadius(radius: Double)
 
     /** Queues [output] to be sent. */
     fun emit(output: SimOutput)

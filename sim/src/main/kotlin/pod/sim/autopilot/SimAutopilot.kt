@@ -74,6 +74,9 @@ internal class SimAutopilot(
      * ModeGuided::set_radius_and_direction is the only other writer (ArduPlane/mode_guided.cpp).
      */
     override var guidedRadius = 0.0
+        private set
+
+    override fun setGuidedRadius(radius: Double) = run { guidedRadius = radius }
 
     private val outbox = ArrayList<SimOutput>()
     private val contact = GroundContact(this)
@@ -280,9 +283,7 @@ internal class SimAutopilot(
     }
 
     /** From now on the vehicle does [activity] (a command's or the fence's doing), in the mode it is in. */
-    override fun fly(activity: Activity) {
-        this.activity = activity
-    }
+    override fun fly(activity: Activity) = run { this.activity = activity }
 
     /**
      * Whether a take-off to [target] (AMSL) is done: a multirotor within 0.3 m of it, a plane within

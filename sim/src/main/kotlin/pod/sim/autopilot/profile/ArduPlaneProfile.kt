@@ -58,7 +58,7 @@ internal data object ArduPlaneProfile : ArduPilotProfile() {
         val counterClockwise = !(cmd.param4.isNaN() || cmd.param4 == 0f)
         val loiterRad = vehicle.params["WP_LOITER_RAD"]
         val clockwise = if (cmd.param3 > 0f) {
-            vehicle.guidedRadius = cmd.param3.toDouble().coerceAtMost(UINT16_MAX)
+            vehicle.setGuidedRadius(cmd.param3.toDouble().coerceAtMost(UINT16_MAX))
             !counterClockwise
         } else {
             !(counterClockwise || loiterRad < 0)
