@@ -29,7 +29,7 @@ internal class ModeEntry(private val ap: FlightControl) {
             }
             Behaviour.STICK_CLIMB_RATE -> when {
                 !flying -> Activity.Parked
-                profile.rotorcraft -> Activity.Descending(if (name == "ALT_HOLD") null else body.location, profile.pilotDescentRate(ap.params))
+                profile.rotorcraft -> Activity.Descending(body.location.takeIf { profile.stickModeHoldsPosition(name) }, profile.pilotDescentRate(ap.params))
                 else -> holdHere()
             }
             Behaviour.HOLD, Behaviour.GUIDED -> if (flying) holdHere(profile.holdBraking(name)) else Activity.Parked

@@ -121,6 +121,12 @@ internal data object ArduCopterProfile : ArduPilotProfile() {
      */
     override fun pilotDescentRate(params: SimParameters): Double = params["PILOT_SPEED_DN"].takeIf { it > 0 }.let { it ?: params["PILOT_SPEED_UP"] } / 100
 
+    /**
+     * ALT_HOLD controls no horizontal position (ArduCopter/mode_althold.cpp: the pilot's lean
+     * angles, zero with no sticks), so it sinks wherever it stops; LOITER and POSHOLD hold theirs.
+     */
+    override fun stickModeHoldsPosition(name: String): Boolean = name != "ALT_HOLD"
+
     /** CIRCLE_RADIUS (cm) around the point ahead, clockwise when CIRCLE_RATE ≥ 0 (AC_Circle). */
     override fun circleMode(params: SimParameters): Pair<Double, Boolean> = params["CIRCLE_RADIUS"] / 100 to (params["CIRCLE_RATE"] >= 0)
 

@@ -227,6 +227,9 @@ internal sealed class AutopilotProfile {
     /** The descent with the throttle stick at minimum in a stick-climb-rate mode, m/s. */
     open fun pilotDescentRate(params: SimParameters): Double = error("$this has no stick climb-rate mode")
 
+    /** Whether stick-climb-rate mode [name] holds its horizontal position while it descends (rather than stopping wherever it does). */
+    open fun stickModeHoldsPosition(name: String): Boolean = true
+
     /** The circle CIRCLE mode flies around the point ahead: radius m and direction. */
     open fun circleMode(params: SimParameters): Pair<Double, Boolean> = error("$this has no circle mode")
 
