@@ -46,7 +46,7 @@ class InterruptSpec : StringSpec({
      */
     suspend fun SimVehicle.shouldBeHolding(above: Double) {
         state.value.modeName shouldBe "BRAKE"
-        val s = withTimeout(10.seconds) { state.first { abs(it.climbRate) < 0.5 } }
+        val s = withTimeout(10.seconds) { state.first { abs(it.climbRate.metersPerSecond) < 0.5 } }
         s.modeName shouldBe "BRAKE"
         s.armed shouldBe true
         s.relativeAltitude.meters shouldBeGreaterThan above

@@ -105,7 +105,7 @@ class MavsdkActionSpec : StringSpec({
             }
 
             val speeds = CopyOnWriteArrayList<Double>()
-            val speedWatch = launch(start = CoroutineStart.UNDISPATCHED) { sim.state.collect { speeds += it.groundSpeed } }
+            val speedWatch = launch(start = CoroutineStart.UNDISPATCHED) { sim.state.collect { speeds += it.groundSpeed.metersPerSecond } }
             peer.atCheckpoint("arrived") {
                 speedWatch.cancel()
                 peer.await("action") { it["step"] == "goto_location" }["result"] shouldBe "SUCCESS"

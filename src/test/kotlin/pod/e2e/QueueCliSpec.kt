@@ -137,7 +137,7 @@ class QueueCliSpec : StringSpec({
                 queue("status").shouldBeInstanceOf<Event.QueueStatus>().current.shouldBeNull()
 
                 // Holding in the air: stopped, armed, at the path's height, not sinking.
-                val still = withTimeout(30.seconds) { sim.state.first { it.groundSpeed < 0.3 && abs(it.climbRate) < 0.3 } }
+                val still = withTimeout(30.seconds) { sim.state.first { it.groundSpeed.metersPerSecond < 0.3 && abs(it.climbRate.metersPerSecond) < 0.3 } }
                 still.armed shouldBe true
                 still.relativeAltitude.meters shouldBe (25.0 plusOrMinus 2.5)
 
@@ -181,12 +181,12 @@ class QueueCliSpec : StringSpec({
                 // A far goto: the copter is on its way when the signal comes.
                 pod("queue", "append", "goto", "--north", "500", "--east", "0", "--control", control).code shouldBe 0
                 serve.awaitOut(10.seconds) { it == "vehicle 62: flying #1 goto (500 N, 0 E)" }
-                withTimeout(30.seconds) { sim.state.first { it.groundSpeed > 3.0 } }
+                withTimeout(30.seconds) { sim.state.first { it.groundSpeed.metersPerSecond > 3.0 } }
                 serve.signal("TERM")
                 serve.exitCode(30.seconds) shouldBe 130
                 serve.out.value shouldContain "interrupted by SIGTERM: vehicle 62 holding in BRAKE (mode BRAKE, armed)"
                 serve.err.value.joinToString("\n") shouldContain "pod: SIGTERM: stopping"
-                val still = withTimeout(30.seconds) { sim.state.first { it.groundSpeed < 0.3 && abs(it.climbRate) < 0.3 } }
+                val still = withTimeout(30.seconds) { sim.state.first { it.groundSpeed.metersPerSecond < 0.3 && abs(it.climbRate.metersPerSecond) < 0.3 } }
                 still.modeName shouldBe "BRAKE"
                 still.armed shouldBe true
                 still.relativeAltitude.meters shouldBeGreaterThan 12.0

@@ -37,7 +37,7 @@ class QueueStopSpec : StringSpec({
                     queue.append(goto(at(400.m, 0.m), altitude = 30.m))
                     val home = v.telemetry.home.value!!
                     fun north() = home.northEastTo(sim.state.value.location).first.meters
-                    withTimeout(2.minutes) { sim.state.first { home.northEastTo(it.location).first.meters > 150 && it.groundSpeed > 9.0 } }
+                    withTimeout(2.minutes) { sim.state.first { home.northEastTo(it.location).first.meters > 150 && it.groundSpeed.metersPerSecond > 9.0 } }
                     val skippedAt = north()
                     queue.next()
                     var farthest = skippedAt
@@ -51,7 +51,7 @@ class QueueStopSpec : StringSpec({
                     }
                     withClue("metres past the point where next was called") { (farthest - skippedAt) shouldBeLessThan 30.0 }
                     withClue("metres flown back after stopping") { back shouldBeLessThan 1.0 }
-                    hypot(sim.state.value.velocityNed.first, sim.state.value.velocityNed.second) shouldBeLessThan 0.3
+                    hypot(sim.state.value.velocityNed.first.metersPerSecond, sim.state.value.velocityNed.second.metersPerSecond) shouldBeLessThan 0.3
                     flight.cancel()
                 }
             }

@@ -97,7 +97,7 @@ class ReplayInteropSpec : StringSpec({
                 v.action.goto(target)
                 v.action.awaitArrival(target, within = 1.m, timeout = 2.minutes)
                 // Stopped over the target: what both logs end with.
-                withTimeout(1.minutes) { sim.state.first { it.groundSpeed < 0.05 && kotlin.math.abs(it.climbRate) < 0.05 } }
+                withTimeout(1.minutes) { sim.state.first { it.groundSpeed.metersPerSecond < 0.05 && kotlin.math.abs(it.climbRate.metersPerSecond) < 0.05 } }
                 withTimeout(10.seconds) { watch.await("found") { it["sysid"] == "41" } }
             } finally {
                 runInterruptible(Dispatchers.IO) { mavproxy.terminate() }

@@ -71,12 +71,12 @@ class VehicleControlSpec : StringSpec({
                 v.action.takeoff(15.m)
                 val target = home.offset(north = 300.m, east = 0.m, up = 15.m)
                 v.action.goto(target)
-                withTimeout(10.minutes) { sim.state.first { it.groundSpeed > 3.0 } }
+                withTimeout(10.minutes) { sim.state.first { it.groundSpeed.metersPerSecond > 3.0 } }
                 v.action.hold()
                 val stopped = sim.state.value.location
                 // PX4's Hold is where its goto flies: choosing it again would let the copter fly on.
                 // ArduCopter's LOITER would sink to the ground with nobody on the sticks.
-                val still = withTimeout(5.minutes) { sim.state.first { it.groundSpeed < 0.1 && abs(it.climbRate) < 0.1 } }
+                val still = withTimeout(5.minutes) { sim.state.first { it.groundSpeed.metersPerSecond < 0.1 && abs(it.climbRate.metersPerSecond) < 0.1 } }
                 still.location.distanceTo(stopped).meters shouldBeLessThan 30.0
                 abs(still.relativeAltitude.meters - 15.0) shouldBeLessThan 1.0
                 still.armed shouldBe true

@@ -34,7 +34,7 @@ class WaypointFlightSpec : StringSpec({
                 val seen = mutableListOf<Triple<Int, Double, Double>>() // index, metres off the point, ground speed
                 val records = WaypointFlight(v).fly(points, Stop(at = { it != 2 }) { visit ->
                     val s = sim.state.value
-                    seen += Triple(visit.index, s.location.copy(altitude = visit.point.altitude).distanceTo(absolute(visit.point, home)).meters, s.groundSpeed)
+                    seen += Triple(visit.index, s.location.copy(altitude = visit.point.altitude).distanceTo(absolute(visit.point, home)).meters, s.groundSpeed.metersPerSecond)
                     delay(2.seconds)
                     visit.index * 10
                 })

@@ -42,7 +42,8 @@ import java.math.BigInteger
 import kotlin.math.roundToInt
 import kotlin.math.roundToLong
 import kotlin.time.TimeMark
-import pod.core.vehicle.Autopilot
+import pod.sim.autopilot.profile.AutopilotProfile
+import pod.sim.autopilot.profile.TextIds
 import pod.core.vehicle.LandedState
 import pod.mavlink.MavlinkEnums
 import pod.sim.autopilot.SimOutput
@@ -51,6 +52,8 @@ import pod.sim.autopilot.packVoltage
 
 /** Builds the messages a simulated vehicle streams from its [SimState]. */
 internal class SimMessages(private val config: SimVehicleConfig, private val bootedAt: TimeMark) {
+    private val profile = AutopilotProfile.of(config.autopilot, config.type)
+    private val textIds = TextIds()
 
     fun canBuild(messageId: Int): Boolean = messageId in SUPPORTED
 
@@ -93,11 +96,6 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
             .build()
     }
 
-    /**
-     * What the autopilot can do: MISSION_ITEM_INT, COMMAND_INT, MAVLink 2, fences and rally points,
-     * and how it packs integer parameters (C cast on ArduPilot, bytewise on PX4). The version is
-     * the one the flavour claims to behave like: ArduPilot 4.7.0, PX4 1.16.0 (official releases).
-     */
     /** The simulated camera, as ArduPilot's AP_Camera describes one: vendor and model, sizes unknown (0). */
     private fun cameraInformation(): CameraInformation = CameraInformation.builder()
         .timeBootMs(timeBootMs())
@@ -105,45 +103,25 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
         .modelName("sim camera".toByteArray().copyOf(32))
         .build()
 
+    /**
+     * What the autopilot can do: MISSION_ITEM_INT, COMMAND_INT, MAVLink 2, fences and rally points,
+     * and how it packs integer parameters, with the version it claims to behave like (both its
+     * profile's: C cast on ArduPilot 4.7.0, bytewise on PX4 1.16.0, official releases).
+     */
     private fun autopilotVersion(): AutopilotVersion {
-        val ardupilot = config.autopilot == Autopilot.ARDUPILOT
-        val encoding = if (ardupilot) CAPABILITY_PARAM_ENCODE_C_CAST else CAPABILITY_PARAM_ENCODE_BYTEWISE
-        val (major, minor) = if (ardupilot) 4 to 7 else 1 to 16
+        val (major, minor) = profile.version
         return AutopilotVersion.builder()
-            .capabilities(EnumValue.create<MavProtocolCapability>(CAPABILITIES or encoding))
+            .capabilities(EnumValue.create<MavProtocolCapability>(CAPABILITIES or profile.paramEncodingCapability))
             .flightSwVersion((major.toLong() shl 24) or (minor.toLong() shl 16) or OFFICIAL_RELEASE)
             .uid(BigInteger.valueOf(config.systemId.toLong()))
             .build()
     }
 
-    private var textId = 0
-
-    /**
-     * STATUSTEXT for [text], cut into 50-character chunks as the autopilot cuts them.
-     *
-     * ArduPilot (GCS::send_textv, libraries/GCS_MAVLink/GCS_Common.cpp): one message with id 0 when
-     * the text fits, else chunks with one new non-zero id and chunk_seq 0, 1, …, the last one
-     * shorter (empty when the text fills its chunks exactly).
-     *
-     * PX4 (MavlinkStreamStatustext::send, src/modules/mavlink/streams/STATUSTEXT.hpp): every text
-     * takes the next value of a uint16 counter that starts at 0 (`msg.id = _id++`), short ones too,
-     * so its first text, chunked or not, has id 0; the chunks stop with the one that holds the end,
-     * so a text that fills its chunks exactly has no empty chunk after it.
-     */
+    /** STATUSTEXT for [text], cut into 50-character chunks with ids as its profile's firmware does. */
     fun statusTexts(severity: Severity, text: String): List<Statustext> {
         // MAV_SEVERITY numbers are the core enum's order, EMERGENCY 0 to DEBUG 7.
         val level = EnumValue.create<MavSeverity>(severity.ordinal)
-        fun chunk(text: String, id: Int, seq: Int) = Statustext.builder().severity(level).text(text).id(id).chunkSeq(seq).build()
-        if (config.autopilot == Autopilot.PX4) {
-            val id = textId
-            textId = (textId + 1) and 0xFFFF
-            val count = maxOf(1, (text.length + TEXT_FIELD - 1) / TEXT_FIELD)
-            return (0 until count).map { i -> chunk(text.substring(i * TEXT_FIELD, minOf((i + 1) * TEXT_FIELD, text.length)), id, i) }
-        }
-        if (text.length <= TEXT_FIELD) return listOf(Statustext.builder().severity(level).text(text).build())
-        textId = if (textId >= 0xFFFF) 1 else textId + 1
-        val chunks = (0..text.length / TEXT_FIELD).map { i -> text.substring(minOf(i * TEXT_FIELD, text.length), minOf((i + 1) * TEXT_FIELD, text.length)) }
-        return chunks.mapIndexed { i, part -> chunk(part, textId, i) }
+        return profile.statusTextChunks(text, textIds).map { Statustext.builder().severity(level).text(it.text).id(it.id).chunkSeq(it.seq).build() }
     }
 
     /** The messages for one of the autopilot's [SimOutput]s (several for a long text). */
@@ -156,8 +134,7 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
     /**
      * What the vehicle sends for a photo it took.
      *
-     * ArduPilot 4.7's own camera backends send CAMERA_FEEDBACK (180) and no CAMERA_IMAGE_CAPTURED:
-     * AP_Camera_Backend::take_picture → log_picture → prep_mavlink_msg_camera_feedback, which queues
+     * Where the profile reports CAMERA_FEEDBACK (ArduPilot 4.7's own camera backends), it queues
      * MSG_CAMERA_FEEDBACK on every link (GCS_SEND_MESSAGE) with img_idx counted from 1
      * (libraries/AP_Camera/AP_Camera_Backend.cpp; SITL, CAM1_TYPE 1: IMAGE_START_CAPTURE ACCEPTED,
      * then only CAMERA_FEEDBACK). A scenario with objects to detect stands for a companion computer
@@ -166,7 +143,7 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
      * CAMERA_IMAGE_CAPTURED.
      */
     private fun photoReports(photo: PhotoEvent, s: SimState): List<Any> {
-        if (config.autopilot != Autopilot.ARDUPILOT) return listOf(imageCaptured(photo, s))
+        if (!profile.reportsCameraFeedback) return listOf(imageCaptured(photo, s))
         val feedback = CameraFeedback.builder()
             .timeUsec(BigInteger.valueOf(photo.time.inWholeMicroseconds))
             .camIdx(0)
@@ -232,12 +209,12 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
     private fun missionCurrent(seq: Int): MissionCurrent = MissionCurrent.builder().seq(seq).total(missionTotal()).build()
 
     private fun vfrHud(s: SimState): VfrHud = VfrHud.builder()
-        .airspeed(s.airspeed.toFloat())
-        .groundspeed(s.groundSpeed.toFloat())
-        .heading(s.headingDeg.roundToInt().mod(360))
+        .airspeed(s.airspeed.metersPerSecond.toFloat())
+        .groundspeed(s.groundSpeed.metersPerSecond.toFloat())
+        .heading(s.heading.degrees.roundToInt().mod(360))
         .throttle(s.throttle)
         .alt(s.location.altitude.meters.toFloat())
-        .climb(s.climbRate.toFloat())
+        .climb(s.climbRate.metersPerSecond.toFloat())
         .build()
 
     fun heartbeat(s: SimState): Heartbeat = Heartbeat.builder()
@@ -281,7 +258,7 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
 
     private fun attitude(s: SimState): Attitude = Attitude.builder()
         .timeBootMs(timeBootMs())
-        .yaw(Math.toRadians(if (s.headingDeg > 180) s.headingDeg - 360 else s.headingDeg).toFloat())
+        .yaw(Math.toRadians(s.heading.degrees.let { if (it > 180) it - 360 else it }).toFloat())
         .build()
 
     private fun globalPosition(s: SimState): GlobalPositionInt = GlobalPositionInt.builder()
@@ -290,10 +267,10 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
         .lon(e7(s.location.longitude))
         .alt((s.location.altitude.meters * 1000).roundToInt())
         .relativeAlt((s.relativeAltitude.meters * 1000).roundToInt())
-        .vx((s.velocityNed.first * 100).roundToInt())
-        .vy((s.velocityNed.second * 100).roundToInt())
-        .vz((s.velocityNed.third * 100).roundToInt())
-        .hdg((s.headingDeg * 100).roundToInt().mod(36000))
+        .vx((s.velocityNed.first.metersPerSecond * 100).roundToInt())
+        .vy((s.velocityNed.second.metersPerSecond * 100).roundToInt())
+        .vz((s.velocityNed.third.metersPerSecond * 100).roundToInt())
+        .hdg((s.heading.degrees * 100).roundToInt().mod(36000))
         .build()
 
     /** Nothing before the estimator's origin (and so home) is set, as GCS_MAVLINK::send_home_position. */
@@ -320,8 +297,6 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
     private fun e7(degrees: Double): Int = (degrees * 1e7).roundToLong().toInt()
 
     private companion object {
-        /** Characters in STATUSTEXT's text field. */
-        const val TEXT_FIELD = 50
         val SUPPORTED = setOf(
             MessageIds.SYS_STATUS, MessageIds.GPS_RAW_INT, MessageIds.ATTITUDE,
             MessageIds.GLOBAL_POSITION_INT, MessageIds.HOME_POSITION, MessageIds.EXTENDED_SYS_STATE,
@@ -331,8 +306,6 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
         )
         /** MISSION_INT, COMMAND_INT, MAVLINK2, MISSION_FENCE, MISSION_RALLY (MAV_PROTOCOL_CAPABILITY bits). */
         const val CAPABILITIES = 0x4 or 0x8 or 0x2000 or 0x4000 or 0x8000
-        const val CAPABILITY_PARAM_ENCODE_BYTEWISE = 0x10
-        const val CAPABILITY_PARAM_ENCODE_C_CAST = 0x20000
         /** FIRMWARE_VERSION_TYPE_OFFICIAL in the low byte of flight_sw_version. */
         const val OFFICIAL_RELEASE = 255L
         const val SENSOR_GPS = 0x20

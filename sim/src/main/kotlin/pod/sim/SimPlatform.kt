@@ -6,7 +6,8 @@ import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
-import kotlinx.coroutines.withTimeout
+import kotlinx.coroutines.withTimeoutOrNull
+import java.util.concurrent.ConcurrentHashMap
 import pod.core.platform.Platform
 import pod.core.platform.QueueCapable
 import pod.core.platform.SurveyCapable
@@ -46,7 +47,8 @@ public enum class SimFlavor(
 /**
  * A simulated fleet ready to fly: [simulated] vehicles on loopback UDP, a [station] that hears
  * them, and the [platform] the engine drives (time scale of the fleet). [start] returns once every
- * vehicle is heard with a position and a GPS fix, so it can arm; [close] stops everything.
+ * vehicle is heard with a position and a GPS fix, so it can arm (or throws [SimFleetNotReady]
+ * naming what it did not hear); [close] stops everything.
  *
  * ```
  * val fleet = SimPlatform.start(scope, List(3) { SimFlavor.ARDUCOPTER }, timeScale = 20.0)
@@ -78,7 +80,7 @@ public class SimPlatform private constructor(
          * Starts one vehicle per entry of [flavors] in [scope], system ids from [firstSystemId],
          * parked [spacing] apart on a ring around [home] (its centre free), with a ground station
          * listening on a free loopback port. Waits up to [readyTimeout] until each vehicle is heard
-         * with a position and a 3D fix, then turns off the disarm of a vehicle armed on the ground
+         * with a position and a 3D fix (else [SimFleetNotReady]), then turns off the disarm of a vehicle armed on the ground
          * (at an accelerated [timeScale] it would pass before a heartbeat confirms the arming).
          *
          * The station and the vehicles read [timebase] and open their links with [openLink]: on a
@@ -124,12 +126,14 @@ public class SimPlatform private constructor(
                     simulated += sim
                     sim.start(scope)
                 }
-                withTimeout(readyTimeout) {
+                // What each vehicle still lacks, so a timeout can say what was not heard.
+                val waiting = ConcurrentHashMap(simulated.associate { it.config.systemId to "no heartbeat" })
+                withTimeoutOrNull(readyTimeout) {
                     val heard = gcs.vehicles.first { v -> simulated.all { it.config.systemId in v } }
                     coroutineScope {
-                        for (sim in simulated) launch { ready(heard.getValue(sim.config.systemId)) }
+                        for (sim in simulated) launch { ready(heard.getValue(sim.config.systemId), sim, waiting) }
                     }
-                }
+                } ?: throw SimFleetNotReady(readyTimeout, waiting.toMap())
                 return SimPlatform(simulated, gcs, MavlinkPlatform(gcs, timeScale, ExecutorTiming(), payloads))
             } catch (e: Throwable) {
                 simulated.forEach { it.stop() }
@@ -140,17 +144,20 @@ public class SimPlatform private constructor(
 
         /**
          * Waits for a position, a fix and home (so the platform offers the vehicle at once), then
-         * keeps a vehicle armed on the ground armed.
+         * keeps a vehicle armed on the ground armed (its profile's parameter); [waiting] says what
+         * is still missing, and loses the vehicle once it is ready.
          */
-        private suspend fun ready(vehicle: MavlinkVehicle) {
+        private suspend fun ready(vehicle: MavlinkVehicle, sim: SimVehicle, waiting: MutableMap<Int, String>) {
+            val id = sim.config.systemId
+            waiting[id] = "no position"
             vehicle.telemetry.position.first { it != null }
+            waiting[id] = "no 3D fix"
             vehicle.telemetry.gps.first { it?.has3dFix == true }
+            waiting[id] = "no home"
             vehicle.telemetry.home.first { it != null }
-            val id = vehicle.identity.value
-            when {
-                id.autopilot == Autopilot.PX4 -> vehicle.params.write("COM_DISARM_PRFLT", -1.0)
-                id.type.isMultirotor -> vehicle.params.write("DISARM_DELAY", 0.0)
-            }
+            waiting[id] = "keep-armed parameter not written"
+            sim.autopilot.profile.keepArmedOnGround?.let { (name, value) -> vehicle.params.write(name, value) }
+            waiting.remove(id)
         }
     }
 }

@@ -1,7 +1,10 @@
 package pod.sim
 
+import pod.core.units.Angle
 import pod.core.units.Distance
 import pod.core.units.Location
+import pod.core.units.Speed
+import pod.core.units.deg
 import pod.core.units.m
 import pod.core.vehicle.LandedState
 import kotlin.math.hypot
@@ -13,10 +16,10 @@ public data class SimState(
     public val location: Location,
     /** Home: where it booted, or where DO_SET_HOME moved it. */
     public val home: Location,
-    /** Velocity north, east, down in m/s. */
-    public val velocityNed: Triple<Double, Double, Double> = Triple(0.0, 0.0, 0.0),
-    /** Heading in degrees, 0..360. */
-    public val headingDeg: Double = 0.0,
+    /** Velocity north, east, down. */
+    public val velocityNed: Triple<Speed, Speed, Speed> = Triple(Speed.ZERO, Speed.ZERO, Speed.ZERO),
+    /** Heading, 0..360°. */
+    public val heading: Angle = 0.deg,
     /** Battery charge, 0..1. */
     public val charge: Double,
     /** Motors armed. */
@@ -27,8 +30,8 @@ public data class SimState(
     public val customMode: Long = 0,
     /** The flight mode's name ("GUIDED", "AUTO.MISSION", …). */
     public val modeName: String = "",
-    /** Airspeed in m/s (no wind: the speed through the air along the heading). */
-    public val airspeed: Double = 0.0,
+    /** Airspeed (no wind: the speed through the air along the heading). */
+    public val airspeed: Speed = Speed.ZERO,
     /** Throttle in percent, 0..100. */
     public val throttle: Int = 0,
     /** The mission item being executed (MISSION_CURRENT's seq). */
@@ -58,9 +61,9 @@ public data class SimState(
     /** Altitude above mean sea level. */
     public val altitudeAmsl: Distance get() = location.altitude
 
-    /** Horizontal speed over the ground in m/s. */
-    public val groundSpeed: Double get() = hypot(velocityNed.first, velocityNed.second)
+    /** Horizontal speed over the ground. */
+    public val groundSpeed: Speed get() = Speed(hypot(velocityNed.first.metersPerSecond, velocityNed.second.metersPerSecond))
 
-    /** Climb rate in m/s, positive up. */
-    public val climbRate: Double get() = -velocityNed.third
+    /** Climb rate, positive up. */
+    public val climbRate: Speed get() = Speed(-velocityNed.third.metersPerSecond)
 }

@@ -260,11 +260,11 @@ public class SimVehicle(
                 autopilot.commands.handleSetMode(message.baseMode().value(), message.customMode(), frame.systemId, frame.componentId)
             }
             is ParamRequestRead -> if (addressedToUs(message.targetSystem(), message.targetComponent())) {
-                autopilot.paramService.read(message.paramId(), message.paramIndex())
+                autopilot.paramResponder.read(message.paramId(), message.paramIndex())
             }
-            is ParamRequestList -> if (addressedToUs(message.targetSystem(), message.targetComponent())) autopilot.paramService.list()
+            is ParamRequestList -> if (addressedToUs(message.targetSystem(), message.targetComponent())) autopilot.paramResponder.list()
             is ParamSet -> if (addressedToUs(message.targetSystem(), message.targetComponent())) {
-                autopilot.paramService.set(message.paramId(), message.paramValue())
+                autopilot.paramResponder.set(message.paramId(), message.paramValue())
             }
             else -> return
         }

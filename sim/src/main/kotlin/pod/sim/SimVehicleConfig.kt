@@ -1,10 +1,11 @@
 package pod.sim
 
-import pod.mavlink.MessageIds
 import pod.core.units.Location
 import pod.core.units.m
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleType
+import pod.sim.autopilot.profile.AutopilotProfile
+import pod.sim.autopilot.profile.Px4Profile
 import pod.sim.world.CameraFov
 import pod.sim.world.Rangefinder
 import pod.sim.world.SimObject
@@ -28,7 +29,7 @@ public data class SimVehicleConfig(
     public val componentId: Int = 1,
     /** Airframe it announces and flies as. */
     public val type: VehicleType = VehicleType.QUADROTOR,
-    /** Autopilot flavour: decides mode numbering and protocol quirks. */
+    /** Autopilot: with [type], picks the firmware it plays (mode numbering, protocol quirks, behaviour). */
     public val autopilot: Autopilot = Autopilot.ARDUPILOT,
     /** Where it boots; altitude above mean sea level. */
     public val home: Location = DEFAULT_HOME,
@@ -123,48 +124,18 @@ public data class SimVehicleConfig(
         public val DEFAULT_HOME: Location = Location(41.178_046, -8.595_786, 120.m)
 
         /**
-         * What a vehicle of [autopilot] and [type] streams before a ground station asks:
-         * - ArduCopter: nothing but HEARTBEAT (its SRn_ stream rates default to 0;
-         *   ArduPilot libraries/GCS_MAVLink/GCS_MAVLink_Parameters.cpp, AP_MAV_DEFAULT_STREAM_RATE_* for
-         *   APM_BUILD_COPTER_OR_HELI);
-         * - ArduPlane: its stream groups at 1 Hz (same file, the ArduPlane defaults): SYS_STATUS,
-         *   MISSION_CURRENT, GPS_RAW_INT (EXT_STAT), GLOBAL_POSITION_INT (POSITION), ATTITUDE (EXTRA1),
-         *   VFR_HUD (EXTRA2); HOME_POSITION and EXTENDED_SYS_STATE only when asked;
-         * - PX4: [DEFAULT_STREAM_RATES], its normal-mode set (PX4 src/modules/mavlink/mavlink_main.cpp,
-         *   Mavlink::configure_streams_to_default, MAVLINK_MODE_NORMAL).
+         * What a vehicle of [autopilot] and [type] streams before a ground station asks, as its
+         * autopilot profile says: ArduCopter nothing but HEARTBEAT (its SRn_ stream rates default
+         * to 0), ArduPlane its stream groups at 1 Hz, PX4 [DEFAULT_STREAM_RATES] (its normal-mode set).
          */
-        public fun defaultStreamRates(autopilot: Autopilot, type: VehicleType): Map<Int, Double> = when {
-            autopilot == Autopilot.PX4 -> DEFAULT_STREAM_RATES
-            type == VehicleType.FIXED_WING -> ARDUPLANE_STREAM_RATES
-            else -> emptyMap()
-        }
-
-        private val ARDUPLANE_STREAM_RATES: Map<Int, Double> = mapOf(
-            MessageIds.SYS_STATUS to 1.0,
-            MessageIds.MISSION_CURRENT to 1.0,
-            MessageIds.GPS_RAW_INT to 1.0,
-            MessageIds.GLOBAL_POSITION_INT to 1.0,
-            MessageIds.ATTITUDE to 1.0,
-            MessageIds.VFR_HUD to 1.0,
-        )
+        public fun defaultStreamRates(autopilot: Autopilot, type: VehicleType): Map<Int, Double> = AutopilotProfile.of(autopilot, type).streamDefaults
 
         /**
          * PX4's streams unasked: SYS_STATUS, GPS_RAW_INT, EXTENDED_SYS_STATE, MISSION_CURRENT 1 Hz;
-         * GLOBAL_POSITION_INT, ATTITUDE, VFR_HUD 2 Hz; HOME_POSITION 0.2 Hz; DISTANCE_SENSOR 0.5 Hz,
-         * which carries something only when a distance sensor publishes (MAVLINK_MODE_NORMAL in
-         * configure_streams_to_default; streams/DISTANCE_SENSOR.hpp sends one message per updated
-         * distance_sensor topic, none without a sensor).
+         * GLOBAL_POSITION_INT, ATTITUDE, VFR_HUD 2 Hz; HOME_POSITION 0.2 Hz; DISTANCE_SENSOR 0.5 Hz
+         * (PX4 src/modules/mavlink/mavlink_main.cpp, Mavlink::configure_streams_to_default,
+         * MAVLINK_MODE_NORMAL).
          */
-        public val DEFAULT_STREAM_RATES: Map<Int, Double> = mapOf(
-            MessageIds.SYS_STATUS to 1.0,
-            MessageIds.GPS_RAW_INT to 1.0,
-            MessageIds.ATTITUDE to 2.0,
-            MessageIds.GLOBAL_POSITION_INT to 2.0,
-            MessageIds.HOME_POSITION to 0.2,
-            MessageIds.EXTENDED_SYS_STATE to 1.0,
-            MessageIds.VFR_HUD to 2.0,
-            MessageIds.MISSION_CURRENT to 1.0,
-            MessageIds.DISTANCE_SENSOR to 0.5,
-        )
+        public val DEFAULT_STREAM_RATES: Map<Int, Double> = Px4Profile.STREAM_DEFAULTS
     }
 }

@@ -137,7 +137,7 @@ fun main(args: Array<String>) {
 private suspend fun holdStill(rig: QueueRig) {
     withTimeout(60.seconds) {
         rig.vehicle.action.hold()
-        rig.sim.state.first { it.groundSpeed < 0.1 && kotlin.math.abs(it.climbRate) < 0.1 }
+        rig.sim.state.first { it.groundSpeed.metersPerSecond < 0.1 && kotlin.math.abs(it.climbRate.metersPerSecond) < 0.1 }
     }
 }
 

@@ -97,7 +97,7 @@ object TimingAnalysis {
      */
     fun analyse(states: List<SimState>, from: Double, waypoints: List<Location>, actions: List<ActionRun>): FlightTimings {
         val flown = states.filter { it.time.seconds() >= from }
-        val startedMoving = flown.firstOrNull { it.groundSpeed > MOVING_MPS }?.time?.seconds()
+        val startedMoving = flown.firstOrNull { it.groundSpeed.metersPerSecond > MOVING_MPS }?.time?.seconds()
         var searchFrom = from
         val timings = waypoints.mapIndexed { i, wp ->
             val action = actions.firstOrNull { it.index == i }
@@ -127,6 +127,6 @@ object TimingAnalysis {
         val (n, e) = s.location.northEastTo(point)
         val d = hypot(n.meters, e.meters)
         if (d < 0.01) return 0.0
-        return (s.velocityNed.first * n.meters + s.velocityNed.second * e.meters) / d
+        return (s.velocityNed.first.metersPerSecond * n.meters + s.velocityNed.second.metersPerSecond * e.meters) / d
     }
 }

@@ -23,7 +23,7 @@ import pod.sim.flight.horizontalDistance
  * AC_Avoid pushing back at the fence (pilot modes only), rally points as return points, Plane's
  * landing exceptions (no breach in the flare; none while landing with RTL_AUTOLAND).
  */
-internal class ArduPilotFence(ap: SimAutopilot) : Geofence(ap) {
+internal class ArduPilotFence(ap: FlightControl, private val copter: Boolean) : Geofence(ap) {
     private var lastEnableParam = Double.NaN
     private var enabledTypes = 0
 
@@ -42,12 +42,12 @@ internal class ArduPilotFence(ap: SimAutopilot) : Geofence(ap) {
     private val action: Int get() = ap.params["FENCE_ACTION"].toInt()
 
     // Copter::fence_checks_async runs at 25 Hz, Plane::fence_checks_async at 3 Hz.
-    override val checkInterval: Double = if (ap.multirotor) 0.04 else 0.333
+    override val checkInterval: Double = if (copter) 0.04 else 0.333
 
     override fun modeChanged() {
         super.modeChanged()
         // Copter calls manual_recovery_start unless FENCE_ACTION is report-only; Plane always.
-        if (breaches != 0 && (!ap.multirotor || action != REPORT_ONLY)) recoveryUntil = ap.time + MANUAL_RECOVERY_SECONDS
+        if (breaches != 0 && (!copter || action != REPORT_ONLY)) recoveryUntil = ap.time + MANUAL_RECOVERY_SECONDS
     }
 
     override fun refresh() {
@@ -107,7 +107,7 @@ internal class ArduPilotFence(ap: SimAutopilot) : Geofence(ap) {
             if (circleDistance >= 0) {
                 if (breaches and CIRCLE == 0 || (circleBackup != 0.0 && fromHome >= circleBackup)) {
                     fresh = fresh or record(CIRCLE)
-                    circleBackup = fromHome + if (ap.multirotor) COPTER_CIRCLE_BACKUP_METRES else PLANE_CIRCLE_BACKUP_METRES
+                    circleBackup = fromHome + if (copter) COPTER_CIRCLE_BACKUP_METRES else PLANE_CIRCLE_BACKUP_METRES
                 }
             } else {
                 breaches = breaches and CIRCLE.inv()
@@ -136,7 +136,7 @@ internal class ArduPilotFence(ap: SimAutopilot) : Geofence(ap) {
                 lastStatusAt = ap.time
                 val boundary = breaches and (CIRCLE or POLYGON) != 0
                 // Copter's AC_Avoid is not limiting in the modes a station flies (MITIGATE_NONE); Plane has none (UNKNOWN).
-                ap.emit(SimOutput.FenceStatus(true, breachCount, if (boundary) BREACH_BOUNDARY else BREACH_MAXALT, breachTimeMs, if (ap.multirotor) 1 else 0))
+                ap.emit(SimOutput.FenceStatus(true, breachCount, if (boundary) BREACH_BOUNDARY else BREACH_MAXALT, breachTimeMs, if (copter) 1 else 0))
             }
         }
         return type
@@ -149,7 +149,7 @@ internal class ArduPilotFence(ap: SimAutopilot) : Geofence(ap) {
         polygonDistance.takeIf { types and POLYGON != 0 },
     ).maxOrNull() ?: 0.0
 
-    override fun check() = if (ap.multirotor) copterCheck() else planeCheck()
+    override fun check() = if (copter) copterCheck() else planeCheck()
 
     /**
      * Copter::fence_checks_async and Copter::fence_check. "Fence breach cleared" and "… breached"
@@ -165,7 +165,7 @@ internal class ArduPilotFence(ap: SimAutopilot) : Geofence(ap) {
         if (!ap.armed || fresh == 0) return
         if (ap.flying) ap.text(Severity.NOTICE, "${names(fresh)} breached")
         if (action == REPORT_ONLY) return
-        val manualThrottle = Modes.behaviour(ap.autopilot, ap.type, ap.modeName) == Behaviour.MANUAL
+        val manualThrottle = ap.profile.behaviour(ap.modeName) == Behaviour.MANUAL
         if (!ap.flying || (manualThrottle && breaches and ALT_MAX == 0)) {
             ap.disarm()
             return
@@ -204,7 +204,7 @@ internal class ArduPilotFence(ap: SimAutopilot) : Geofence(ap) {
                 6, 7 -> {
                     setModeByFence("GUIDED")
                     val (radius, clockwise) = ap.loiterRadius()
-                    ap.activity = Activity.GoTo(planeReturnPoint(), null, radius, clockwise, from = ap.body.location)
+                    ap.fly(Activity.GoTo(planeReturnPoint(), null, radius, clockwise, from = ap.body.location))
                 }
             }
         } else if (before != 0 && breaches == 0) {
@@ -279,7 +279,7 @@ internal class ArduPilotFence(ap: SimAutopilot) : Geofence(ap) {
         val option = ap.params["FENCE_OPTIONS"].toInt() and OPTION_DISABLE_MODE_CHANGE != 0
         if (!option || !ap.armed || enabled() == 0 || breaches == 0 || !modeByFence) return null
         return when {
-            !ap.multirotor -> "Mode change to $name denied, in fence recovery" to Severity.NOTICE
+            !copter -> "Mode change to $name denied, in fence recovery" to Severity.NOTICE
             ap.flying -> "Mode change to $name failed: in fence recovery" to Severity.WARNING
             else -> null
         }

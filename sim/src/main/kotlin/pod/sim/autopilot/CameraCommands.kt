@@ -17,13 +17,13 @@ import pod.mavlink.command.MavCommands.IMAGE_STOP_CAPTURE
  * - DO_DIGICAM_CONTROL takes a photo when param5 (shooting command) is 1;
  * - DO_SET_CAM_TRIGG_DIST: a photo every param1 metres (0 stops), one now when param3 is 1.
  * PX4 routes IMAGE_START_CAPTURE to a MAVLink camera (component 100), which answers it; the
- * simulated vehicle answers for its built-in camera itself, the same way for both flavours.
+ * simulated vehicle answers for its built-in camera itself, the same way for every profile.
  */
 internal object CameraCommands {
     /** The commands [handle] takes. */
     val HANDLED: Set<Int> = setOf(IMAGE_START_CAPTURE, IMAGE_STOP_CAPTURE, DO_DIGICAM_CONTROL, DO_SET_CAM_TRIGG_DIST)
 
-    fun handle(ap: SimAutopilot, cmd: CommandRequest): CommandResult {
+    fun handle(ap: FlightControl, cmd: CommandRequest): CommandResult {
         if (!ap.world.camera) return CommandResult.UNSUPPORTED
         val camera = ap.camera
         when (cmd.command) {

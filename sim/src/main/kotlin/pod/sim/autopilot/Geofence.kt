@@ -4,16 +4,15 @@ import pod.core.units.Location
 import pod.core.vehicle.Severity
 import pod.mavlink.command.CommandResult
 import pod.mavlink.mission.MissionItem
-import pod.mavlink.mission.MissionType
 
 /**
- * The geofence a ground station uploads (the FENCE list), enforced as the vehicle's flavour does
+ * The geofence a ground station uploads (the FENCE list), enforced as the vehicle's profile picks
  * ([ArduPilotFence], [Px4Geofence]): the vehicle tests its position periodically and, on a new
  * breach while armed, says so and switches to its fence action's mode, once per breach.
  * [SimAutopilot.step] calls [step] after the physics, [SimAutopilot.setMode] calls [modeChanged],
  * and [Commands] asks the rest (DO_FENCE_ENABLE, guided destinations, arming, mode changes).
  */
-internal abstract class Geofence(protected val ap: SimAutopilot) {
+internal abstract class Geofence(protected val ap: FlightControl) {
     private var source: List<MissionItem>? = null
     private var nextCheck = 0.0
 
@@ -66,7 +65,7 @@ internal abstract class Geofence(protected val ap: SimAutopilot) {
 
     /** Brings the zones up to date with the FENCE list (and the flavour's settings); cheap when nothing changed. */
     protected open fun refresh() {
-        val items = ap.missionServer.list(MissionType.FENCE)
+        val items = ap.fenceItems
         if (items != source) {
             source = items
             zones = accept(FenceZones.of(items))
@@ -91,8 +90,5 @@ internal abstract class Geofence(protected val ap: SimAutopilot) {
     companion object {
         /** MAV_CMD_DO_FENCE_ENABLE. */
         const val DO_FENCE_ENABLE = 207
-
-        /** The fence of [ap]'s flavour. */
-        fun of(ap: SimAutopilot): Geofence = if (ap.isPx4) Px4Geofence(ap) else ArduPilotFence(ap)
     }
 }

@@ -14,7 +14,7 @@ import kotlin.math.sqrt
  * (NaN: unchanged), x/y the centre (NaN, or INT32_MAX in COMMAND_INT: unchanged), z its altitude
  * AMSL (NaN: unchanged). ArduPilot has no DO_ORBIT handler and answers UNSUPPORTED (the caller).
  */
-internal class OrbitCommand(private val ap: SimAutopilot) {
+internal class OrbitCommand(private val ap: FlightControl) {
 
     /**
      * Handles [cmd]; [refuse] explains a refusal before the ack, [report] queues a line that
@@ -31,7 +31,8 @@ internal class OrbitCommand(private val ap: SimAutopilot) {
             refuse("Orbit command rejected")
             return CommandResult.TEMPORARILY_REJECTED
         }
-        if (ap.multirotor) multicopter(cmd, report) else fixedWing(cmd)
+        // Airframe: PX4 orbits a multicopter in its own mode and loiters a fixed wing in Hold.
+        if (ap.profile.rotorcraft) multicopter(cmd, report) else fixedWing(cmd)
         return CommandResult.ACCEPTED
     }
 
@@ -59,7 +60,7 @@ internal class OrbitCommand(private val ap: SimAutopilot) {
             // failsafe task, which holds the position; Commander has already accepted the command
             // and the mode stays Orbit.
             report("Orbit radius limit exceeded")
-            ap.activity = Activity.Hold(here, 0.0)
+            ap.fly(Activity.Hold(here, 0.0))
             return
         }
         // _sanitizeParams: the speed is limited to MPC_XY_VEL_MAX, then to a centripetal
@@ -70,7 +71,7 @@ internal class OrbitCommand(private val ap: SimAutopilot) {
         val lon = cmd.longitude()
         val center = if (lat != null && lon != null) Location(lat, lon, start.center.altitude) else start.center
         val alt = cmd.z.takeIf { it.isFinite() }?.toDouble() ?: center.altitude.meters
-        ap.activity = Activity.Orbit(ap.at(center, alt), radius, clockwise = velocity > 0, speed = abs(velocity))
+        ap.fly(Activity.Orbit(ap.at(center, alt), radius, clockwise = velocity > 0, speed = abs(velocity)))
     }
 
     /**
@@ -87,7 +88,7 @@ internal class OrbitCommand(private val ap: SimAutopilot) {
         val lon = cmd.longitude() ?: here.longitude
         val alt = cmd.z.takeIf { it.isFinite() }?.toDouble() ?: here.altitude.meters
         val radius = cmd.param1.takeIf { it.isFinite() && abs(it) > 0f }?.let { abs(it).toDouble() } ?: ap.params["NAV_LOITER_RAD"]
-        ap.activity = Activity.Hold(Location(lat, lon, alt.m), radius, clockwise = !(cmd.param1 < 0))
+        ap.fly(Activity.Hold(Location(lat, lon, alt.m), radius, clockwise = !(cmd.param1 < 0)))
     }
 
     companion object {

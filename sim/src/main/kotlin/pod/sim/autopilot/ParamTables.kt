@@ -1,27 +1,29 @@
 package pod.sim.autopilot
 
-import pod.core.vehicle.Autopilot
-import pod.core.vehicle.VehicleType
 import pod.mavlink.param.ParamType.INT16
 import pod.mavlink.param.ParamType.INT32
 import pod.mavlink.param.ParamType.INT8
 import pod.mavlink.param.ParamType.REAL32
 
 /**
- * The parameters each simulated flavour carries: a realistic subset, with the real names, units
+ * The parameters each simulated firmware carries (its profile picks the table): a realistic subset, with the real names, units
  * and defaults, that the simulated flight reads (so a PARAM_SET changes how it flies). Ranges are
  * the documented ones; the simulated PX4 refuses values outside them, the simulated ArduPilot
  * stores whatever it is sent, as the real one does.
  */
 internal object ParamTables {
 
-    /** The table for [autopilot] flying [type], with [systemId] as the system-id parameter. */
-    fun forVehicle(autopilot: Autopilot, type: VehicleType, systemId: Int): List<ParamDef> = when {
-        autopilot == Autopilot.PX4 && type.isMultirotor -> px4Common(systemId) + px4Multirotor
-        autopilot == Autopilot.PX4 -> px4Common(systemId) + px4FixedWing
-        type.isMultirotor -> arduCommon(systemId) + arduCopter + arduFence(copter = true)
-        else -> arduCommon(systemId) + arduPlane + arduFence(copter = false)
-    }
+    /** ArduCopter's table, with [systemId] as MAV_SYSID. */
+    fun arduCopter(systemId: Int): List<ParamDef> = arduCommon(systemId) + arduCopterOnly + arduFence(copter = true)
+
+    /** ArduPlane's table, with [systemId] as MAV_SYSID. */
+    fun arduPlane(systemId: Int): List<ParamDef> = arduCommon(systemId) + arduPlaneOnly + arduFence(copter = false)
+
+    /** PX4's multicopter table, with [systemId] as MAV_SYS_ID. */
+    fun px4Multicopter(systemId: Int): List<ParamDef> = px4Common(systemId) + px4MulticopterOnly
+
+    /** PX4's fixed-wing table, with [systemId] as MAV_SYS_ID. */
+    fun px4FixedWing(systemId: Int): List<ParamDef> = px4Common(systemId) + px4FixedWingOnly
 
     /**
      * The fence parameters the simulated fence reads, with AC_Fence.cpp's var_info defaults:
@@ -53,7 +55,7 @@ internal object ParamTables {
         ParamDef("STAT_BOOTCNT", 1.0, INT16),
     )
 
-    private val arduCopter = listOf(
+    private val arduCopterOnly = listOf(
         ParamDef("WPNAV_SPEED", 500.0, REAL32, 10.0, 2000.0), // cm/s
         ParamDef("WPNAV_SPEED_UP", 250.0, REAL32, 10.0, 1000.0), // cm/s
         ParamDef("WPNAV_SPEED_DN", 150.0, REAL32, 10.0, 500.0), // cm/s
@@ -74,7 +76,7 @@ internal object ParamTables {
         ParamDef("SYSID_SW_TYPE", 10.0, INT8, readOnly = true),
     )
 
-    private val arduPlane = listOf(
+    private val arduPlaneOnly = listOf(
         ParamDef("AIRSPEED_CRUISE", 15.0, REAL32, 5.0, 100.0), // m/s
         ParamDef("AIRSPEED_MIN", 9.0, REAL32, 5.0, 100.0), // m/s
         ParamDef("AIRSPEED_MAX", 22.0, REAL32, 5.0, 100.0), // m/s
@@ -116,7 +118,7 @@ internal object ParamTables {
         ParamDef("COM_FAIL_ACT_T", 5.0, REAL32, 0.0, 25.0), // s of Hold before a Return or Land failsafe
     )
 
-    private val px4Multirotor = listOf(
+    private val px4MulticopterOnly = listOf(
         ParamDef("MPC_XY_CRUISE", 5.0, REAL32, 3.0, 20.0), // m/s
         ParamDef("MPC_Z_VEL_MAX_UP", 3.0, REAL32, 0.5, 8.0), // m/s
         ParamDef("MPC_Z_VEL_MAX_DN", 1.5, REAL32, 0.5, 4.0), // m/s
@@ -126,7 +128,7 @@ internal object ParamTables {
         ParamDef("MC_ORBIT_RAD_MAX", 1000.0, REAL32, 1.0, 10000.0), // m (flight_task_orbit_params.yaml)
     )
 
-    private val px4FixedWing = listOf(
+    private val px4FixedWingOnly = listOf(
         ParamDef("FW_AIRSPD_TRIM", 15.0, REAL32, 0.5, 40.0), // m/s
         ParamDef("FW_AIRSPD_MIN", 10.0, REAL32, 0.5, 40.0), // m/s
         ParamDef("FW_AIRSPD_MAX", 20.0, REAL32, 0.5, 40.0), // m/s

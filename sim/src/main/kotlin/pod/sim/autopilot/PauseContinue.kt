@@ -24,13 +24,13 @@ import pod.mavlink.command.CommandResult.UNSUPPORTED
  * Commander::handle_command: default → UNSUPPORTED); ArduPlane does not handle it either: both
  * hold by switching mode.
  */
-internal class PauseContinue(private val ap: SimAutopilot) {
+internal class PauseContinue(private val ap: FlightControl) {
     /** The goto a GUIDED pause stopped, and the hold that stands in for it while paused. */
     private var pausedGoto: Pair<Activity.Hold, Activity.GoTo>? = null
 
     /** Handles [cmd]; [refuse] queues the line explaining a refusal. */
     fun handle(cmd: CommandRequest, refuse: (String, Severity) -> Unit): CommandResult {
-        if (ap.isPx4 || !ap.multirotor) return UNSUPPORTED
+        if (!ap.profile.handlesPauseContinue) return UNSUPPORTED
         val ok = when (cmd.param1.toInt()) {
             0 -> pause()
             1 -> resume()
@@ -46,7 +46,7 @@ internal class PauseContinue(private val ap: SimAutopilot) {
         is Activity.GoTo -> true.also {
             val hold = Activity.Hold(ap.body.location, 0.0)
             pausedGoto = hold to a
-            ap.activity = hold
+            ap.fly(hold)
         }
         else -> ap.modeName == "GUIDED"
     }
@@ -55,7 +55,7 @@ internal class PauseContinue(private val ap: SimAutopilot) {
         if (ap.activity == Activity.Mission) return ap.mission.resume()
         if (ap.modeName != "GUIDED") return false
         // The hold a pause put in place, still current: the mode was not left meanwhile.
-        pausedGoto?.let { (hold, goto) -> if (ap.activity === hold) ap.activity = goto }
+        pausedGoto?.let { (hold, goto) -> if (ap.activity === hold) ap.fly(goto) }
         pausedGoto = null
         return true
     }

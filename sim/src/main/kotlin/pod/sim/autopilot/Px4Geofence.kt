@@ -23,7 +23,7 @@ import pod.sim.flight.horizontalDistance
  * Not modelled: GF_PREDICT, the mission feasibility check against the fence, PX4's refusal to arm
  * outside the fence.
  */
-internal class Px4Geofence(ap: SimAutopilot) : Geofence(ap) {
+internal class Px4Geofence(ap: FlightControl) : Geofence(ap) {
     private var breached = false
     private var wasArmed = false
     private var delayed: Pair<String, Double>? = null

@@ -9,13 +9,14 @@ import pod.sim.flight.horizontalDistance
 /**
  * A return to launch at [altitude] (AMSL; the caller picks the higher of the return altitude and
  * the current one for multirotors): climb there, fly home, then land there
- * (multirotors) or circle it at [loiterRadius] (planes). A multirotor climbs before it leaves;
+ * (a multirotor) or circle it at [loiterRadius] (planes). A rotorcraft climbs before it leaves;
  * a plane climbs on the way.
  */
 internal class ReturnPlan(
     private val home: Location,
     private val altitude: Double,
-    private val multirotor: Boolean,
+    /** The airframe hovers (physics: it climbs first and lands at home) rather than circling home. */
+    private val rotorcraft: Boolean,
     private val loiterRadius: Double,
     private val clockwise: Boolean,
 ) {
@@ -23,24 +24,24 @@ internal class ReturnPlan(
 
     private var phase = Phase.CLIMB
 
-    /** True once a multirotor is descending over home. */
-    val landing: Boolean get() = multirotor && phase == Phase.FINAL
+    /** True once a rotorcraft is descending over home. */
+    val landing: Boolean get() = rotorcraft && phase == Phase.FINAL
 
     /** True once a plane reached home and circles it. */
-    val circlingHome: Boolean get() = !multirotor && phase == Phase.FINAL
+    val circlingHome: Boolean get() = !rotorcraft && phase == Phase.FINAL
 
     /** What to fly now, from [body]. */
     fun guidance(body: Body): Guidance {
         if (phase == Phase.CLIMB) {
-            if (multirotor && body.location.altitude.meters < altitude - 0.5) return Guidance.Climb(altitude)
+            if (rotorcraft && body.location.altitude.meters < altitude - 0.5) return Guidance.Climb(altitude)
             phase = Phase.RETURN
         }
         val target = atAltitude(home, altitude)
         if (phase == Phase.RETURN) {
-            val arrived = horizontalDistance(body.location, home) < if (multirotor) 1.0 else loiterRadius * 1.5
+            val arrived = horizontalDistance(body.location, home) < if (rotorcraft) 1.0 else loiterRadius * 1.5
             if (!arrived) return Guidance.GoTo(target)
             phase = Phase.FINAL
         }
-        return if (multirotor) Guidance.Land(home) else Guidance.Loiter(target, loiterRadius, clockwise)
+        return if (rotorcraft) Guidance.Land(home) else Guidance.Loiter(target, loiterRadius, clockwise)
     }
 }

@@ -1,6 +1,5 @@
 package pod.sim.autopilot
 
-import pod.core.vehicle.Autopilot
 import pod.mavlink.param.ParamType
 import kotlin.math.roundToLong
 
@@ -18,11 +17,16 @@ internal data class ParamDef(
 internal enum class ParamWrite { STORED, UNKNOWN, READ_ONLY, OUT_OF_RANGE }
 
 /**
- * A vehicle's parameter table in the order it lists it, with the wire encoding of its flavour:
+ * A vehicle's parameter table in the order it lists it, with the wire encoding its profile names:
  * ArduPilot sends every value as a float carrying the number (a C cast, whatever the type);
- * PX4 sends integer parameters bytewise, the int32's bits inside the float field.
+ * PX4 sends integer parameters bytewise ([integersBytewise]), the int32's bits inside the float
+ * field, and refuses values outside a parameter's range ([refusesOutOfRange]).
  */
-internal class SimParameters(private val autopilot: Autopilot, definitions: List<ParamDef>) {
+internal class SimParameters(
+    definitions: List<ParamDef>,
+    private val integersBytewise: Boolean = false,
+    private val refusesOutOfRange: Boolean = false,
+) {
     private val defs: List<ParamDef> = definitions
     private val byName: Map<String, Int> = defs.withIndex().associate { (i, d) -> d.name to i }
     private val values: DoubleArray = DoubleArray(defs.size) { defs[it].default }
@@ -46,14 +50,14 @@ internal class SimParameters(private val autopilot: Autopilot, definitions: List
      * Stores [value] for [name] after checking that it exists and is writable. ArduPilot stores any
      * finite number (GCS_Param.cpp, GCS_MAVLINK::handle_param_set checks only that the parameter
      * exists and may be set; AP_Param::set_float clamps integers to their type's range), so only
-     * PX4 refuses a value outside the parameter's range here.
+     * a profile with [refusesOutOfRange] (PX4) refuses a value outside the parameter's range here.
      */
     fun set(name: String, value: Double): ParamWrite {
         val i = byName[name] ?: return ParamWrite.UNKNOWN
         val def = defs[i]
         if (def.readOnly) return ParamWrite.READ_ONLY
         if (!value.isFinite()) return ParamWrite.OUT_OF_RANGE
-        if (autopilot == Autopilot.PX4 && (value < def.min || value > def.max)) return ParamWrite.OUT_OF_RANGE
+        if (refusesOutOfRange && (value < def.min || value > def.max)) return ParamWrite.OUT_OF_RANGE
         val stored = if (def.type.isInteger) value.roundToLong().toDouble().coerceIn(def.type.range!!) else value.toFloat().toDouble()
         values[i] = stored
         return ParamWrite.STORED
@@ -63,14 +67,14 @@ internal class SimParameters(private val autopilot: Autopilot, definitions: List
     fun wireValue(index: Int): Float {
         val def = defs[index]
         val v = values[index]
-        return if (autopilot == Autopilot.PX4 && def.type.isInteger) Float.fromBits(v.toLong().toInt()) else v.toFloat()
+        return if (integersBytewise && def.type.isInteger) Float.fromBits(v.toLong().toInt()) else v.toFloat()
     }
 
     /** The number a PARAM_SET's float [raw] means for the parameter at [index]. */
     fun fromWire(index: Int, raw: Float): Double {
         val def = defs[index]
         return when {
-            autopilot == Autopilot.PX4 && def.type.isInteger -> raw.toRawBits().toDouble()
+            integersBytewise && def.type.isInteger -> raw.toRawBits().toDouble()
             // ArduPilot adds 0.01 away from zero and casts, so it truncates (2.7 -> 2, 2.999 -> 3),
             // clamped to the type's range (AP_Param.cpp, AP_Param::set_float).
             def.type.isInteger -> if (raw.isFinite()) (raw + if (raw < 0) -0.01f else 0.01f).toLong().toDouble() else Double.NaN

@@ -25,7 +25,7 @@ import pod.sim.flight.northEast
  * flares high and touches down far past the land point, as ArduPlane SITL did (53°: flare at 52 m,
  * touchdown ~311 m past).
  */
-internal class SlopeLanding(private val ap: SimAutopilot, private val from: Location, private val land: Location) {
+internal class SlopeLanding(private val ap: FlightControl, private val from: Location, private val land: Location) {
     private val total = max(horizontalDistance(from, land), 1.0)
     private val course = if (horizontalDistance(from, land) < 1.0) ap.body.heading else bearing(from, land)
     private val slope = (from.altitude.meters - land.altitude.meters) / total

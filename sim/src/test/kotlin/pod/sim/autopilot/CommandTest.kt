@@ -85,16 +85,16 @@ class CommandTest : StringSpec({
 
     "ArduPilot stores what it is sent: out-of-range values and STAT_BOOTCNT, integers clamped to their type" {
         val ardu = autopilot()
-        ardu.paramService.set("WPNAV_SPEED", 1e9f)
+        ardu.paramResponder.set("WPNAV_SPEED", 1e9f)
         ardu.drain().filterIsInstance<SimOutput.Param>().size shouldBe 1
         ardu.params["WPNAV_SPEED"] shouldBe 1e9
-        ardu.paramService.set("STAT_BOOTCNT", 9f)
+        ardu.paramResponder.set("STAT_BOOTCNT", 9f)
         texts(ardu.drain()) shouldBe emptyList()
         ardu.params["STAT_BOOTCNT"] shouldBe 9.0
-        ardu.paramService.set("RTL_ALT", 1e12f)
+        ardu.paramResponder.set("RTL_ALT", 1e12f)
         ardu.drain()
         ardu.params["RTL_ALT"] shouldBe 2147483647.0
-        ardu.paramService.set("LAND_SPEED", 1e6f)
+        ardu.paramResponder.set("LAND_SPEED", 1e6f)
         ardu.drain()
         ardu.params["LAND_SPEED"] shouldBe 32767.0
     }
@@ -249,16 +249,16 @@ class CommandTest : StringSpec({
 
     "parameters: ArduPilot sends floats, PX4 sends INT32 bytewise; writes echo the stored value and change the flight" {
         val ardu = autopilot()
-        ardu.paramService.set("WPNAV_SPEED", 1000f)
+        ardu.paramResponder.set("WPNAV_SPEED", 1000f)
         val echo = ardu.drain().filterIsInstance<SimOutput.Param>().single()
         ardu.params.at(echo.index)!!.name shouldBe "WPNAV_SPEED"
         ardu.params.wireValue(echo.index) shouldBe 1000f
         ardu.performance().cruise shouldBe 10.0
-        ardu.paramService.set("DISARM_DELAY", 5f)
+        ardu.paramResponder.set("DISARM_DELAY", 5f)
         ardu.params.wireValue(ardu.params.index("DISARM_DELAY")!!) shouldBe 5f
-        ardu.paramService.set("NO_SUCH_PARAM", 1f)
+        ardu.paramResponder.set("NO_SUCH_PARAM", 1f)
         ardu.drain().filterIsInstance<SimOutput.Param>().size shouldBe 1 // DISARM_DELAY only; the unknown one is ignored
-        ardu.paramService.set("SYSID_SW_TYPE", 3f)
+        ardu.paramResponder.set("SYSID_SW_TYPE", 3f)
         val out = ardu.drain()
         texts(out).map { it.text } shouldContain "Param write denied (SYSID_SW_TYPE)"
         ardu.params["SYSID_SW_TYPE"] shouldBe 10.0
@@ -266,20 +266,20 @@ class CommandTest : StringSpec({
         val px4 = autopilot(Autopilot.PX4)
         val sysId = px4.params.index("MAV_SYS_ID")!!
         px4.params.wireValue(sysId).toRawBits() shouldBe 1
-        px4.paramService.set("MAV_SYS_ID", Float.fromBits(7))
+        px4.paramResponder.set("MAV_SYS_ID", Float.fromBits(7))
         px4.drain().filterIsInstance<SimOutput.Param>().single().index shouldBe sysId
         px4.params["MAV_SYS_ID"] shouldBe 7.0
         px4.params.wireValue(sysId).toRawBits() shouldBe 7
-        px4.paramService.set("MPC_XY_CRUISE", 8f)
+        px4.paramResponder.set("MPC_XY_CRUISE", 8f)
         px4.drain()
         px4.params.wireValue(px4.params.index("MPC_XY_CRUISE")!!) shouldBe 8f
 
-        px4.paramService.list()
+        px4.paramResponder.list()
         val listed = px4.drain().filterIsInstance<SimOutput.Param>()
         listed.map { it.index } shouldBe (0 until px4.params.count).toList()
-        px4.paramService.read("", 1)
-        px4.paramService.read("NAV_ACC_RAD", -1)
-        px4.paramService.read("NOPE", -1)
+        px4.paramResponder.read("", 1)
+        px4.paramResponder.read("NAV_ACC_RAD", -1)
+        px4.paramResponder.read("NOPE", -1)
         px4.drain().filterIsInstance<SimOutput.Param>().map { it.index } shouldBe listOf(1, px4.params.index("NAV_ACC_RAD"))
     }
 

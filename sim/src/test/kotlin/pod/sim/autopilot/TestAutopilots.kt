@@ -59,7 +59,7 @@ internal fun SimAutopilot.armCommand(): CommandResult = command(CommandRequest(M
 
 internal fun SimAutopilot.mode(name: String): CommandResult {
     val custom = pod.mavlink.telemetry.FlightModes.customMode(autopilot, type, name)!!
-    return if (isPx4) {
+    return if (profile is pod.sim.autopilot.profile.Px4Profile) {
         command(CommandRequest(MavCommands.DO_SET_MODE, param1 = 1f, param2 = ((custom shr 16) and 0xFF).toFloat(), param3 = ((custom shr 24) and 0xFF).toFloat()))
     } else {
         command(CommandRequest(MavCommands.DO_SET_MODE, param1 = 1f, param2 = custom.toFloat()))

@@ -25,8 +25,8 @@ class ZeroAltitudeTest : StringSpec({
      */
     fun fly(ap: SimAutopilot, items: List<MissionItem>, texts: MutableList<String>, lowest: DoubleArray, cruise: Double = 29.0, done: (SimAutopilot) -> Boolean) {
         ap.run(2.5)
-        ap.load(if (ap.isPx4) items else listOf(homeItem()) + items)
-        if (!ap.isPx4) ap.armCommand() shouldBe CommandResult.ACCEPTED
+        ap.load(if ((ap.profile is pod.sim.autopilot.profile.Px4Profile)) items else listOf(homeItem()) + items)
+        if (!(ap.profile is pod.sim.autopilot.profile.Px4Profile)) ap.armCommand() shouldBe CommandResult.ACCEPTED
         ap.command(CommandRequest(300)) shouldBe CommandResult.ACCEPTED
         var climbed = false
         ap.runUntil(600.0, check = {

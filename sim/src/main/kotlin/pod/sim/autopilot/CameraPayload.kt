@@ -6,11 +6,12 @@ import pod.sim.flight.horizontalDistance
 import kotlin.time.Duration.Companion.seconds
 
 /**
- * The simulated camera's trigger: single shots, a time interval with an optional count
+ * The camera payload on the vehicle side (core's `Camera` is the ground side's view of one): its
+ * trigger: single shots, a time interval with an optional count
  * (IMAGE_START_CAPTURE) or a distance (DO_SET_CAM_TRIGG_DIST). Pure: [step] is fed the time and
  * position and returns the photos taken.
  */
-internal class Camera {
+internal class CameraPayload {
     private var interval: Double? = null
     private var remaining: Int = 0 // 0 = until stopped
     private var nextAt: Double = 0.0
