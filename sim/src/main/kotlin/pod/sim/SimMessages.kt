@@ -50,8 +50,12 @@ import pod.sim.autopilot.SimOutput
 import pod.sim.autopilot.SimParameters
 import pod.sim.autopilot.packVoltage
 
-/** Builds the messages a simulated vehicle streams from its [SimState]. */
-internal class SimMessages(private val config: SimVehicleConfig, private val bootedAt: TimeMark) {
+/** Builds the messages a simulated vehicle streams from its [SimState]; [missionTotal] counts the mission's items for MISSION_CURRENT. */
+internal class SimMessages(
+    private val config: SimVehicleConfig,
+    private val bootedAt: TimeMark,
+    private val missionTotal: () -> Int = { 0 },
+) {
     private val profile = AutopilotProfile.of(config.autopilot, config.type)
     private val textIds = TextIds()
 
@@ -202,9 +206,6 @@ internal class SimMessages(private val config: SimVehicleConfig, private val boo
             .build()
         is SimOutput.Photo -> imageCaptured(out.photo, s)
     }
-
-    /** Total mission items, for MISSION_CURRENT. */
-    var missionTotal: () -> Int = { 0 }
 
     private fun missionCurrent(seq: Int): MissionCurrent = MissionCurrent.builder().seq(seq).total(missionTotal()).build()
 

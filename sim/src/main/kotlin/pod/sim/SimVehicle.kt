@@ -73,7 +73,7 @@ public class SimVehicle(
 ) {
     private val encoder = VehicleEncoder(codec, config.systemId, config.componentId)
     private val bootedAt = timebase.clock.markNow()
-    private val messages = SimMessages(config, bootedAt)
+    private val messages = SimMessages(config, bootedAt) { missionServer.list(MissionType.MISSION).size }
     private val _state: MutableStateFlow<SimState>
     private var scope: CoroutineScope? = null
 
@@ -104,7 +104,6 @@ public class SimVehicle(
             autopilot.params.set(name, value)
         }
         _state = MutableStateFlow(autopilot.state())
-        messages.missionTotal = { missionServer.list(MissionType.MISSION).size }
     }
 
     /** HEARTBEAT and the telemetry streams, from the configured (by default the firmware's) rates. */

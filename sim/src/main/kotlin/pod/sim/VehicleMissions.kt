@@ -1,17 +1,15 @@
 package pod.sim
 
 import pod.core.units.Location
-import pod.core.vehicle.Autopilot
-import pod.core.vehicle.VehicleType
 import pod.mavlink.MavFrames
 import pod.mavlink.command.MavCommands
 import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionMessage
 import pod.mavlink.protocol.Step
 import pod.mavlink.vehicle.MissionServer
-import pod.mavlink.vehicle.MissionServerFlavor
 import pod.mavlink.vehicle.VehicleMachine
 import pod.sim.autopilot.SimAutopilot
+import pod.sim.autopilot.profile.AutopilotProfile
 import kotlin.math.roundToLong
 
 /**
@@ -33,10 +31,9 @@ internal class VehicleMissions(private val autopilot: SimAutopilot) : VehicleMac
          * cleared come from the [autopilot] as it is when a message asks.
          */
         fun server(config: SimVehicleConfig, autopilot: () -> SimAutopilot): MissionServer = MissionServer(
-            // The firmware's mission protocol and storage form: mavlink's server knows both flavours,
-            // so this is the one place the vehicle side picks one (an autopilot profile can supply it).
-            if (config.autopilot == Autopilot.PX4) MissionServerFlavor.PX4 else MissionServerFlavor.ARDUPILOT,
-            fixedWing = config.type == VehicleType.FIXED_WING,
+            // The firmware's mission protocol and storage form, as its profile says.
+            AutopilotProfile.of(config.autopilot, config.type).missionServerFlavor,
+            fixedWing = AutopilotProfile.of(config.autopilot, config.type).missionServerFixedWing,
             storageReadyAt = (config.missionStorageReadyAfter / config.timeScale).inWholeNanoseconds,
             home = { homeItem(autopilot().home) },
             clearAllowed = { type -> autopilot().allowsClearing(type) },

@@ -1,5 +1,6 @@
 package pod.sim.autopilot
 
+import pod.mavlink.telemetry.Px4CustomMode
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.collections.shouldContain
 import io.kotest.matchers.doubles.plusOrMinus
@@ -53,7 +54,7 @@ class OrbitTest : StringSpec({
         val ap = px4InTheAir(VehicleType.QUADROTOR)
         ap.command(orbitLong(30f, center, 15.0, speed = 4f)) shouldBe CommandResult.ACCEPTED
         ap.heartbeatMode() shouldBe "POSCTL.ORBIT"
-        ap.state().customMode shouldBe ((3L shl 16) or (1L shl 24))
+        ap.state().customMode shouldBe Px4CustomMode.pack(main = 3, sub = 1)
         ap.run(30.0) // onto the circle
         val track = ap.track(center, 60.0)
         track.meanRadius shouldBe (30.0 plusOrMinus 4.5)

@@ -1,5 +1,6 @@
 package pod.sim.autopilot
 
+import pod.mavlink.telemetry.Px4CustomMode
 import pod.mavlink.command.MavCommands
 import pod.mavlink.command.CommandResult
 import pod.core.units.Location
@@ -60,7 +61,7 @@ internal fun SimAutopilot.armCommand(): CommandResult = command(CommandRequest(M
 internal fun SimAutopilot.mode(name: String): CommandResult {
     val custom = pod.mavlink.telemetry.FlightModes.customMode(autopilot, type, name)!!
     return if (profile is pod.sim.autopilot.profile.Px4Profile) {
-        command(CommandRequest(MavCommands.DO_SET_MODE, param1 = 1f, param2 = ((custom shr 16) and 0xFF).toFloat(), param3 = ((custom shr 24) and 0xFF).toFloat()))
+        command(CommandRequest(MavCommands.DO_SET_MODE, param1 = 1f, param2 = Px4CustomMode.main(custom).toFloat(), param3 = Px4CustomMode.sub(custom).toFloat()))
     } else {
         command(CommandRequest(MavCommands.DO_SET_MODE, param1 = 1f, param2 = custom.toFloat()))
     }

@@ -3,7 +3,7 @@ package pod.sim.autopilot.profile
 import pod.core.vehicle.Autopilot
 import pod.mavlink.MessageIds
 import pod.mavlink.command.CommandResult
-import pod.mavlink.mission.MissionServerFlavor
+import pod.mavlink.vehicle.MissionServerFlavor
 import pod.sim.autopilot.CommandReplies
 import pod.sim.autopilot.CommandRequest
 import pod.sim.autopilot.FlightControl

@@ -4,7 +4,7 @@ import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleType
 import pod.mavlink.command.CommandResult
 import pod.mavlink.mission.MissionItem
-import pod.mavlink.mission.MissionServerFlavor
+import pod.mavlink.vehicle.MissionServerFlavor
 import pod.core.units.Location
 import pod.sim.autopilot.Activity
 import pod.sim.autopilot.Behaviour

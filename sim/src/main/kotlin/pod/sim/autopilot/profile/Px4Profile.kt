@@ -1,11 +1,12 @@
 package pod.sim.autopilot.profile
 
+import pod.mavlink.telemetry.Px4CustomMode
 import pod.core.vehicle.Autopilot
 import pod.mavlink.MessageIds
 import pod.mavlink.command.CommandResult
 import pod.mavlink.command.MavCommands
 import pod.mavlink.mission.MissionItem
-import pod.mavlink.mission.MissionServerFlavor
+import pod.mavlink.vehicle.MissionServerFlavor
 import pod.sim.autopilot.Behaviour
 import pod.sim.autopilot.CommandReplies
 import pod.sim.autopilot.CommandRequest
@@ -51,7 +52,7 @@ internal sealed class Px4Profile : AutopilotProfile() {
     override val setModeMessageAck: Int get() = MavCommands.DO_SET_MODE
 
     /** DO_SET_MODE's param2 is the main mode, param3 the sub mode (packed as in px4_custom_mode.h). */
-    override fun setModeCustomMode(param2: Float, param3: Float): Long = (param2.toInt().toLong() shl 16) or (param3.toInt().toLong() shl 24)
+    override fun setModeCustomMode(param2: Float, param3: Float): Long = Px4CustomMode.pack(param2.toInt(), param3.toInt())
 
     override val setModeWithoutCustomFlag: CommandResult get() = CommandResult.TEMPORARILY_REJECTED
 
