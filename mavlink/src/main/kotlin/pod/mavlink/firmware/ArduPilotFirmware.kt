@@ -6,7 +6,6 @@ import pod.mavlink.telemetry.ModeRole
 
 /** What ArduPilot does the same on every airframe; [ArduCopter] and [ArduPlane] add the airframe. */
 public sealed class ArduPilotFirmware : Firmware() {
-    override val itemZeroIsHome: Boolean get() = true
     override val missionNeedsTakeOff: Boolean get() = true
     override val mayRefuseMissionClear: Boolean get() = true
     override val storesMissionPacked: Boolean get() = true

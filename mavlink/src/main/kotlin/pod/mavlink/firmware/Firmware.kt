@@ -39,8 +39,9 @@ public sealed class Firmware {
     /**
      * True when item 0 of the mission list is home and is not flown: ArduPilot keeps home there
      * (libraries/AP_Mission/AP_Mission.cpp); PX4 and generic autopilots store only the items flown.
+     * Read from [missionFlavor], so that the two never disagree.
      */
-    public open val itemZeroIsHome: Boolean get() = false
+    public val itemZeroIsHome: Boolean get() = missionFlavor.homeAtZero
 
     /**
      * True when a mission flown from the ground must begin with a take-off item: ArduCopter and
