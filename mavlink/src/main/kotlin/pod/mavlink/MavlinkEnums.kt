@@ -53,6 +53,7 @@ public object MavlinkEnums {
 
     /** Pod's autopilot kind for a MAV_AUTOPILOT number. */
     public fun autopilot(autopilot: Int): Autopilot = when (autopilot) {
+        // Wire numbers to Pod's kinds: a codec table; what each firmware does is in pod.mavlink.firmware.
         MAV_AUTOPILOT_ARDUPILOTMEGA -> Autopilot.ARDUPILOT
         MAV_AUTOPILOT_PX4 -> Autopilot.PX4
         MAV_AUTOPILOT_GENERIC -> Autopilot.GENERIC

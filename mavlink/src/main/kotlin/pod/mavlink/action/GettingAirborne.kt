@@ -6,11 +6,10 @@ import kotlinx.coroutines.flow.combine
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.withTimeoutOrNull
 import pod.core.units.Distance
-import pod.core.vehicle.Autopilot
 import pod.core.vehicle.LandedState
-import pod.core.vehicle.VehicleType
 import pod.core.vehicle.isAirborne
 import pod.mavlink.MavlinkVehicle
+import pod.mavlink.firmware.TakeOffWay
 import pod.mavlink.telemetry.FlightModes
 import pod.mavlink.telemetry.ModeRole
 
@@ -77,7 +76,7 @@ internal class GettingAirborne(private val vehicle: MavlinkVehicle, private val 
         val (autopilot, type) = vehicle.airframe()
         return when {
             // NAV_TAKEOFF in GUIDED (Mode::do_user_takeoff; has_user_takeoff in ArduCopter/mode.h).
-            autopilot != Autopilot.PX4 && !type.isPlane -> FlightModes.forRole(autopilot, type, ModeRole.GUIDED)
+            vehicle.firmware().takeOffWay == TakeOffWay.COMMAND_IN_GUIDED -> FlightModes.forRole(autopilot, type, ModeRole.GUIDED)
             // ArduPlane arms where it is, if it may, and then enters TAKEOFF ([VehicleActions.takeoff]);
             // PX4 arms in Hold and takes NAV_TAKEOFF.
             else -> armableNow()
@@ -88,34 +87,14 @@ internal class GettingAirborne(private val vehicle: MavlinkVehicle, private val 
     private fun armableNow(): String? {
         val (autopilot, type) = vehicle.airframe()
         val current = vehicle.telemetry.mode.value?.name
-        return if (current != null && ArmableModes.armable(autopilot, type, current)) null else FlightModes.forRole(autopilot, type, ModeRole.HOLD)?.takeIf {
-            ArmableModes.armable(autopilot, type, it)
+        val firmware = vehicle.firmware()
+        return if (current != null && firmware.armsIn(current)) null else FlightModes.forRole(autopilot, type, ModeRole.HOLD)?.takeIf {
+            firmware.armsIn(it)
         } ?: FlightModes.forRole(autopilot, type, ModeRole.GUIDED)
     }
 
     private companion object {
         /** How long a freshly heard vehicle's position and landed state may take to arrive. */
         val STATE_WAIT = 3.seconds
-    }
-}
-
-/**
- * The modes each autopilot refuses to arm in, from its sources; Pod switches out of them before it
- * arms. ArduCopter: the modes whose `allows_arming()` is false (ArduCopter/mode.h: AUTO unless
- * AUTO_OPTIONS allows it, RTL, SMART_RTL, AUTO_RTL, LAND, CIRCLE, BRAKE, FLIP, AUTOTUNE, FOLLOW,
- * AVOID_ADSB). ArduPlane: RTL and the QuadPlane returns and landings (`_pre_arm_checks` in
- * ArduPlane/mode.h, "Arm: RTL mode not armable"). PX4: Return, Land, Precision land and Orbit
- * (src/modules/commander/ModeUtil/mode_requirements.cpp, `mode_req_prevent_arming`).
- */
-internal object ArmableModes {
-    private val COPTER = setOf("AUTO", "RTL", "SMART_RTL", "AUTO_RTL", "LAND", "CIRCLE", "BRAKE", "FLIP", "AUTOTUNE", "FOLLOW", "AVOID_ADSB")
-    private val PLANE = setOf("RTL", "QRTL", "QLAND", "LOITER_ALT_QLAND")
-    private val PX4 = setOf("AUTO.RTL", "AUTO.LAND", "AUTO.PRECLAND", "POSCTL.ORBIT")
-
-    /** Whether [autopilot] arms a [type] in mode [name]. */
-    fun armable(autopilot: Autopilot, type: VehicleType, name: String): Boolean = when {
-        autopilot == Autopilot.PX4 -> name !in PX4
-        type.isPlane -> name !in PLANE
-        else -> name !in COPTER
     }
 }

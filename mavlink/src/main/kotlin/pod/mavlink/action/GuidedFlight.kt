@@ -3,7 +3,6 @@ package pod.mavlink.action
 import pod.core.units.Distance
 import pod.core.units.Location
 import pod.core.units.Speed
-import pod.core.vehicle.Autopilot
 import pod.mavlink.MavFrames
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.command.MavCommandParams.REPOSITION_FLAG_CHANGE_MODE
@@ -25,7 +24,7 @@ internal class GuidedFlight(private val vehicle: MavlinkVehicle, private val mod
         // the reposition with a bare FAILED.
         waits.requireArmed("fly to a point")
         val guided = vehicle.modeFor(ModeRole.GUIDED)
-        if (vehicle.airframe().first != Autopilot.PX4) modes.setMode(guided)
+        if (!vehicle.firmware().repositionSwitchesMode) modes.setMode(guided)
         vehicle.commands.send(
             VehicleCommand(
                 DO_REPOSITION,

@@ -1,6 +1,5 @@
 package pod.mavlink.action
 
-import pod.core.vehicle.Autopilot
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.command.CommandRejected
 import pod.mavlink.command.CommandResult
@@ -49,8 +48,8 @@ internal class MissionActions(
         if (!vehicle.telemetry.armed.value) throw NothingInFlight(vehicle.systemId, "resume")
         val mission = vehicle.modeFor(ModeRole.MISSION)
         val mode = vehicle.telemetry.mode.value?.name
-        val (autopilot, type) = vehicle.airframe()
-        val pausedInMode = mode == mission || (autopilot == Autopilot.ARDUPILOT && type.isMultirotor && mode == vehicle.modeFor(ModeRole.GUIDED))
+        val pausedInMode = mode == mission ||
+            (vehicle.firmware().pausesGuidedFlight && vehicle.identity.value.type.isMultirotor && mode == vehicle.modeFor(ModeRole.GUIDED))
         if (pausedByCommand == true || (pausedByCommand == null && pausedInMode)) {
             vehicle.commands.send(VehicleCommand(DO_PAUSE_CONTINUE, param1 = 1f))
         } else {
@@ -62,7 +61,7 @@ internal class MissionActions(
     /** Starts the uploaded mission at item [first] (null: where it stands), arming first with [arm]. */
     suspend fun start(first: Int?, arm: Boolean) {
         vehicle.mission.requireWhole("start the mission")
-        val px4 = vehicle.airframe().first == Autopilot.PX4
+        val px4 = vehicle.firmware().missionStartArms
         // ArduCopter and ArduPlane take MISSION_START disarmed and switch to AUTO on the ground
         // (GCS_MAVLINK_Copter::handle_MAV_CMD_MISSION_START, ArduPlane's GCS_MAVLINK_Plane: set_mode
         // AUTO only), where the copter then refuses to arm ("Mode not armable"); PX4 arms itself
@@ -74,6 +73,7 @@ internal class MissionActions(
             // PX4 denies MISSION_START beyond seq_total: check against what the vehicle holds.
             val count = vehicle.mission.download().size
             // ArduPilot's item 0 is home: a mission to fly has more (ModeAuto::init: num_commands() > 1).
+            // (A generic autopilot is counted the ArduPilot way here, as before firmware profiles.)
             val empty = count <= (if (px4) 0 else 1)
             if (first != null && first >= count) throw NoSuchMissionItem(vehicle.systemId, if (count == 0) null else first, count)
             if (empty) throw NoSuchMissionItem(vehicle.systemId, null, count)

@@ -26,6 +26,7 @@ internal class ModeSwitch(private val vehicle: MavlinkVehicle, private val readi
         val custom = FlightModes.customMode(autopilot, type, name)
             ?: throw UnknownMode(name, autopilot, type, FlightModes.names(autopilot, type))
         if (vehicle.telemetry.mode.value?.customMode == custom) return
+        // The command's form follows the custom-mode numbering ([FlightModes]), a codec fact, not behaviour.
         val command = if (autopilot == Autopilot.PX4) {
             VehicleCommand(DO_SET_MODE, param1 = MODE_FLAG_CUSTOM_MODE_ENABLED.toFloat(), param2 = Px4CustomMode.main(custom).toFloat(), param3 = Px4CustomMode.sub(custom).toFloat())
         } else {

@@ -4,7 +4,6 @@ import kotlinx.coroutines.flow.combine
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.withTimeoutOrNull
 import pod.core.units.Distance
-import pod.core.vehicle.Autopilot
 import pod.core.vehicle.isOnGround
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.command.CommandRejected
@@ -13,6 +12,7 @@ import pod.mavlink.command.MavCommands.NAV_LAND
 import pod.mavlink.command.MavCommands.NAV_RETURN_TO_LAUNCH
 import pod.mavlink.command.MavCommands.NAV_TAKEOFF
 import pod.mavlink.command.VehicleCommand
+import pod.mavlink.firmware.TakeOffWay
 import pod.mavlink.telemetry.ModeRole
 import kotlin.time.Duration
 
@@ -33,17 +33,16 @@ internal class TakeoffAndLanding(
         // VEHICLE_CMD_NAV_TAKEOFF only changes the mode; it never arms), and ArduCopter refuses it
         // with a bare FAILED (Mode::do_user_takeoff): say so before changing anything.
         waits.requireArmed("take off")
-        val (autopilot, type) = vehicle.airframe()
-        when {
-            autopilot == Autopilot.PX4 -> {
+        when (vehicle.firmware().takeOffWay) {
+            TakeOffWay.COMMAND_ANYWHERE -> {
                 val home = awaitHomeAltitude()
                 vehicle.commands.send(VehicleCommand(NAV_TAKEOFF, param4 = Float.NaN, param5 = Double.NaN, param6 = Double.NaN, param7 = (home + altitude.meters).toFloat()))
             }
-            type.isPlane -> {
+            TakeOffWay.TAKEOFF_MODE -> {
                 vehicle.params.write("TKOFF_ALT", altitude.meters)
                 modes.setMode(vehicle.modeFor(ModeRole.TAKEOFF))
             }
-            else -> {
+            TakeOffWay.COMMAND_IN_GUIDED -> {
                 modes.setMode(vehicle.modeFor(ModeRole.GUIDED))
                 try {
                     vehicle.commands.send(VehicleCommand(NAV_TAKEOFF, param7 = altitude.meters.toFloat()))
@@ -61,8 +60,7 @@ internal class TakeoffAndLanding(
 
     /** Lands: a multicopter where it is, an ArduPilot plane through a landing sequence; returns once it has begun. */
     suspend fun land() {
-        val (autopilot, type) = vehicle.airframe()
-        if (autopilot != Autopilot.PX4 && type.isPlane) {
+        if (vehicle.firmware().landsThroughLandingSequence) {
             try {
                 vehicle.commands.send(VehicleCommand(DO_LAND_START))
             } catch (e: CommandRejected) {

@@ -35,6 +35,7 @@ import pod.core.vehicle.isAirborne
 import pod.core.vehicle.isOnGround
 import pod.core.vehicle.VehicleLost
 import pod.mavlink.MavlinkVehicle
+import pod.mavlink.firmware.Firmware
 import pod.mavlink.plan.MissionFlavor
 import pod.mavlink.plan.MissionPlan
 import pod.mavlink.plan.MissionPlanner
@@ -113,10 +114,11 @@ public class MissionExecutor(
 
     private suspend fun fly(report: suspend (MissionEvent) -> Unit) {
         val identity = vehicle.identity.value
-        val flavor = MissionFlavor.of(identity)
+        val firmware = Firmware.of(identity)
+        val flavor = firmware.missionFlavor
         if (vehicle.connection.value == ConnectionState.LOST) throw VehicleLost(vehicle.systemId, during)
         val airborne = airborne()
-        if (!airborne && !flavor.isPx4 && mission.steps.firstOrNull { it !is MissionStep.Action } !is MissionStep.TakeOff) {
+        if (!airborne && firmware.missionNeedsTakeOff && mission.steps.firstOrNull { it !is MissionStep.Action } !is MissionStep.TakeOff) {
             throw MissionNotFlyable(mission.name, "on ${flavor.name} a mission flown from the ground must begin with a take-off")
         }
         val heightNow = vehicle.telemetry.position.value?.relativeAltitude?.takeIf { airborne }
@@ -129,7 +131,7 @@ public class MissionExecutor(
         }
 
         _state.value = MissionRunState.UPLOADING
-        MissionReplacement.replace(vehicle, plan.items, flavor, airborne)
+        MissionReplacement.replace(vehicle, plan.items, airborne)
         emit(MissionEvent.Uploaded(mission.steps.size))
 
         _state.value = MissionRunState.STARTING
@@ -149,7 +151,7 @@ public class MissionExecutor(
                 }.collect { inbox.send(it) }
             }
             if (!airborne) {
-                val changes = vehicle.action.armForFlight(MissionReplacement.armingMode(identity, flavor))
+                val changes = vehicle.action.armForFlight(MissionReplacement.armingMode(identity))
                 if (changes.isNotEmpty()) emit(MissionEvent.Prepared(changes))
             }
             vehicle.action.startMission()

@@ -2,9 +2,9 @@ package pod.mavlink.executor
 
 import pod.core.vehicle.VehicleIdentity
 import pod.mavlink.MavlinkVehicle
+import pod.mavlink.firmware.Firmware
 import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionRejected
-import pod.mavlink.plan.MissionFlavor
 import pod.mavlink.telemetry.FlightModes
 import pod.mavlink.telemetry.ModeRole
 
@@ -20,7 +20,7 @@ import pod.mavlink.telemetry.ModeRole
  * writes every item (MissionItemProtocol::handle_mission_count).
  */
 internal object MissionReplacement {
-    suspend fun replace(vehicle: MavlinkVehicle, items: List<MissionItem>, flavor: MissionFlavor, airborne: Boolean) {
+    suspend fun replace(vehicle: MavlinkVehicle, items: List<MissionItem>, airborne: Boolean) {
         val identity = vehicle.identity.value
         if (airborne && vehicle.telemetry.mode.value?.name == FlightModes.forRole(identity.autopilot, identity.type, ModeRole.MISSION)) {
             vehicle.action.hold()
@@ -28,7 +28,7 @@ internal object MissionReplacement {
         try {
             vehicle.mission.clear()
         } catch (e: MissionRejected) {
-            if (flavor.isPx4) throw e
+            if (!Firmware.of(identity).mayRefuseMissionClear) throw e
         }
         vehicle.mission.upload(items)
     }
@@ -43,9 +43,8 @@ internal object MissionReplacement {
      * - PX4 stays where it is (null): [pod.mavlink.action.VehicleActions.armForFlight] leaves the
      *   modes it will not arm in (return, land, orbit) for its hold mode, as for any arming.
      */
-    fun armingMode(identity: VehicleIdentity, flavor: MissionFlavor): String? = when (flavor) {
-        MissionFlavor.ARDUCOPTER -> FlightModes.forRole(identity.autopilot, identity.type, ModeRole.GUIDED)
-        MissionFlavor.ARDUPLANE -> FlightModes.forRole(identity.autopilot, identity.type, ModeRole.HOLD)
-        else -> null
+    fun armingMode(identity: VehicleIdentity): String? {
+        val firmware = Firmware.of(identity)
+        return firmware.missionArmingRole?.let(firmware::modeFor)
     }
 }

@@ -8,7 +8,6 @@ import kotlinx.coroutines.flow.channelFlow
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
 import pod.core.units.toReadable
-import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleLost
 import pod.core.vehicle.VehicleType
 import pod.mavlink.MavlinkVehicle
@@ -18,6 +17,7 @@ import pod.mavlink.command.CommandRejected
 import pod.mavlink.command.CommandResult
 import pod.mavlink.command.MavCommands
 import pod.mavlink.command.VehicleCommand
+import pod.mavlink.firmware.Firmware
 import pod.mavlink.protocol.RetryPolicy
 import pod.mavlink.run
 
@@ -114,7 +114,7 @@ public class MissionService internal constructor(
                     val identity = vehicle.identity.value
                     val machine = UploadConfirm(
                         type, items, timing, vehicle.roundTrips.mission(), partialFrom,
-                        inOrder = inOrder(), ardupilot = identity.autopilot == Autopilot.ARDUPILOT,
+                        inOrder = inOrder(), ardupilot = Firmware.of(identity).storesMissionPacked,
                         fixedWing = identity.type == VehicleType.FIXED_WING,
                     )
                     try {
@@ -209,7 +209,7 @@ public class MissionService internal constructor(
 
     // PX4 is known to serve in order; any other vehicle shows it (MAVSDK's vehicle side does), and
     // what one download learned, the next starts from.
-    private fun inOrder() = servesInOrder || vehicle.identity.value.autopilot == Autopilot.PX4
+    private fun inOrder() = servesInOrder || Firmware.of(vehicle.identity.value).servesMissionInOrder
 
     private suspend fun downloadLocked(type: MissionType, progress: (TransferProgress) -> Unit): List<MissionItem> {
         val machine = MissionDownload(type, timing, inOrder(), vehicle.roundTrips.mission())

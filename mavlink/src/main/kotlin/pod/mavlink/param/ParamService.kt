@@ -7,10 +7,10 @@ import io.dronefleet.mavlink.common.ParamValue
 import io.dronefleet.mavlink.util.EnumValue
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
-import pod.core.vehicle.Autopilot
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.Wire
 import pod.mavlink.command.CommandTiming
+import pod.mavlink.firmware.Firmware
 import pod.mavlink.run
 
 /**
@@ -29,7 +29,7 @@ public class ParamService internal constructor(
 
     /** How this vehicle packs integers into PARAM_VALUE: by value on ArduPilot, bit for bit elsewhere. */
     public val encoding: ParamEncoding
-        get() = if (vehicle.identity.value.autopilot == Autopilot.ARDUPILOT) ParamEncoding.CAST else ParamEncoding.BYTEWISE
+        get() = Firmware.of(vehicle.identity.value).paramEncoding
 
     /** Reads parameter [name] (case-sensitive, at most 16 characters). */
     public suspend fun read(name: String): Parameter {

@@ -92,13 +92,13 @@ public object MissionPlanner {
                     val rate = step.kind == SpeedKind.CLIMB || step.kind == SpeedKind.DESCENT
                     val p1 = SpeedTypes.of(step.kind).toFloat()
                     val p2 = step.speed.metersPerSecond.toFloat()
-                    if (rate && flavor != MissionFlavor.ARDUCOPTER) {
+                    if (rate && !flavor.climbRateByItem) {
                         out.command(index, VehicleCommand(MavCommands.DO_CHANGE_SPEED, param1 = p1, param2 = p2, param3 = -1f))
                     } else {
                         out.add(index, unpositioned(MavCommands.DO_CHANGE_SPEED, p1 = p1, p2 = p2, p3 = -1f))
                     }
                 }
-                is MissionStep.ChangeAltitude -> if (flavor == MissionFlavor.ARDUPLANE) {
+                is MissionStep.ChangeAltitude -> if (flavor.changesAltitudeByItem) {
                     out.add(index, MissionItem(0, FRAME_RELATIVE, MavCommands.NAV_CONTINUE_AND_CHANGE_ALT, z = step.height.meters.toFloat()))
                 } else {
                     out.add(index, positioned(MavCommands.NAV_WAYPOINT, last.copy(altitude = step.height), p4 = yawUnchanged(flavor)))
@@ -153,7 +153,7 @@ public object MissionPlanner {
         return when (val d = step.duration) {
             LoiterDuration.Unlimited -> positioned(MavCommands.NAV_LOITER_UNLIM, step.location, p3 = radius, p4 = yawUnchanged(flavor))
             is LoiterDuration.Time -> positioned(MavCommands.NAV_LOITER_TIME, step.location, p1 = d.time.toDouble(DurationUnit.SECONDS).toFloat(), p3 = radius)
-            is LoiterDuration.Turns -> if (flavor.isPx4) {
+            is LoiterDuration.Turns -> if (!flavor.loitersByTurns) {
                 val perTurn = maxOf(2 * PI * abs(step.radius.meters) / LOITER_TURN_SPEED_MPS, MIN_SECONDS_PER_TURN)
                 positioned(MavCommands.NAV_LOITER_TIME, step.location, p1 = (perTurn * d.turns).toFloat(), p3 = radius)
             } else {
@@ -163,7 +163,7 @@ public object MissionPlanner {
     }
 
     /** NaN (keep the heading) where PX4 reads param4 as a yaw; ArduPilot stores 0 there. */
-    private fun yawUnchanged(flavor: MissionFlavor): Float = if (flavor.isPx4) Float.NaN else 0f
+    private fun yawUnchanged(flavor: MissionFlavor): Float = if (flavor.nanYawKeepsHeading) Float.NaN else 0f
 
     private fun positioned(command: Int, at: Location, p1: Float = 0f, p2: Float = 0f, p3: Float = 0f, p4: Float = 0f) =
         MissionItem(0, FRAME_RELATIVE, command, param1 = p1, param2 = p2, param3 = p3, param4 = p4, x = at.latE7, y = at.lonE7, z = at.altitude.meters.toFloat())

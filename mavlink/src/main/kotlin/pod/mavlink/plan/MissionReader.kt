@@ -31,7 +31,7 @@ public object MissionReader {
      */
     public fun steps(items: List<MissionItem>, flavor: MissionFlavor): List<MissionStep> =
         items.drop(if (flavor.homeAtZero) 1 else 0)
-            .filterNot { flavor == MissionFlavor.ARDUPLANE && it.command == MavCommands.DO_LAND_START }
+            .filterNot { flavor.landStartIsMarker && it.command == MavCommands.DO_LAND_START }
             .map(::step)
 
     /**

@@ -5,6 +5,7 @@ import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleType
 import pod.mavlink.MavlinkEnums
 import pod.mavlink.MavFrames
+import pod.mavlink.firmware.Firmware
 import pod.mavlink.mission.MissionItem
 import pod.mavlink.mission.MissionType
 
@@ -80,7 +81,7 @@ public object PlanOnVehicle {
     private fun unknownYaw(item: MissionItem): MissionItem =
         if (item.command in YAW_NOT_KEPT && item.param4 == 0f) item.copy(param4 = Float.NaN) else item
 
-    internal fun keepsHome(autopilot: Autopilot) = autopilot == Autopilot.ARDUPILOT
+    internal fun keepsHome(autopilot: Autopilot) = Firmware.of(autopilot).itemZeroIsHome
 
     /** NAV_WAYPOINT, NAV_TAKEOFF, NAV_VTOL_TAKEOFF: the commands whose yaw may be sent NaN (`sanity_check_params`). */
     private val YAW_NOT_KEPT = setOf(16, 22, 84)

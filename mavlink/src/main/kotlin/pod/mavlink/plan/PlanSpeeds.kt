@@ -2,7 +2,7 @@ package pod.mavlink.plan
 
 import kotlinx.coroutines.withTimeoutOrNull
 import pod.core.PodException
-import pod.core.vehicle.Autopilot
+import pod.mavlink.firmware.Firmware
 import pod.mavlink.MavlinkVehicle
 import kotlin.time.Duration.Companion.seconds
 
@@ -15,11 +15,11 @@ public object PlanSpeeds {
     /** [plan] with the speed [vehicle] flies by default; a speed it does not tell (no such parameter) stays as it was. */
     public suspend fun from(vehicle: MavlinkVehicle, plan: QgcPlan): QgcPlan {
         val identity = vehicle.identity.value
-        val px4 = identity.autopilot == Autopilot.PX4
+        val firmware = Firmware.of(identity)
         return if (identity.type.isMultirotor) {
-            plan.copy(hoverSpeed = (if (px4) read(vehicle, "MPC_XY_CRUISE") else read(vehicle, "WPNAV_SPEED")?.div(100)) ?: plan.hoverSpeed)
+            plan.copy(hoverSpeed = read(vehicle, firmware.hoverSpeedParam)?.div(firmware.hoverSpeedPerMetre) ?: plan.hoverSpeed)
         } else {
-            plan.copy(cruiseSpeed = read(vehicle, if (px4) "FW_AIRSPD_TRIM" else "AIRSPEED_CRUISE") ?: plan.cruiseSpeed)
+            plan.copy(cruiseSpeed = read(vehicle, firmware.cruiseSpeedParam) ?: plan.cruiseSpeed)
         }
     }
 

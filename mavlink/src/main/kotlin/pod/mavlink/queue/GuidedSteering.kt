@@ -3,7 +3,6 @@ package pod.mavlink.queue
 import pod.core.units.Distance
 import pod.core.units.Location
 import pod.core.units.m
-import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleType
 import pod.mavlink.MavFrames
 import pod.mavlink.MavlinkVehicle
@@ -11,6 +10,7 @@ import pod.mavlink.command.MavCommandParams.REPOSITION_FLAG_CHANGE_MODE
 import pod.mavlink.command.MavCommands.DO_ORBIT
 import pod.mavlink.command.MavCommands.DO_REPOSITION
 import pod.mavlink.command.VehicleCommand
+import pod.mavlink.firmware.Firmware
 import kotlin.math.PI
 import kotlin.math.atan2
 import kotlin.math.cos
@@ -43,13 +43,13 @@ internal class GuidedSteering(private val vehicle: MavlinkVehicle, private val c
      */
     var planeLoiterRadius: Distance? = null
 
-    private val autopilot: Autopilot get() = vehicle.identity.value.autopilot
+    private val firmware: Firmware get() = Firmware.of(vehicle.identity.value)
     private val type: VehicleType get() = vehicle.identity.value.type
 
     val isPlane: Boolean get() = type == VehicleType.FIXED_WING || type == VehicleType.VTOL
 
     /** Whether circles are flown from the ground, target by target (ArduCopter). */
-    val circlesFromGround: Boolean get() = autopilot != Autopilot.PX4 && !isPlane
+    val circlesFromGround: Boolean get() = !firmware.orbitsOnCommand && !isPlane
 
     /** Flies to [target] and holds there (a plane circles it at its default loiter radius). */
     suspend fun goTo(target: Location) {
@@ -61,7 +61,7 @@ internal class GuidedSteering(private val vehicle: MavlinkVehicle, private val c
         val command = when {
             // PX4's multicopter orbit starts at 1 m/s unless told (FlightTaskOrbit::activate), and
             // caps the speed itself (MPC_XY_VEL_MAX, v² < 2r).
-            autopilot == Autopilot.PX4 -> VehicleCommand(
+            firmware.orbitsOnCommand -> VehicleCommand(
                 DO_ORBIT,
                 param1 = radius.meters.toFloat(),
                 param2 = circleSpeed.toFloat(),
@@ -83,7 +83,7 @@ internal class GuidedSteering(private val vehicle: MavlinkVehicle, private val c
         DO_REPOSITION,
         param1 = -1f,
         param2 = REPOSITION_FLAG_CHANGE_MODE.toFloat(),
-        param3 = if (isPlane && autopilot != Autopilot.PX4) planeLoiterRadius?.meters?.toFloat() ?: 0f else 0f,
+        param3 = if (isPlane && firmware.repositionTakesLoiterRadius) planeLoiterRadius?.meters?.toFloat() ?: 0f else 0f,
         param4 = Float.NaN,
         param5 = target.latitude, param6 = target.longitude, param7 = target.altitude.meters.toFloat(),
         frame = MavFrames.GLOBAL_INT,

@@ -3,6 +3,7 @@ package pod.mavlink.queue
 import kotlinx.coroutines.awaitCancellation
 import kotlinx.coroutines.coroutineScope
 import pod.mavlink.telemetry.ModeRole
+import pod.mavlink.firmware.Firmware
 import pod.mavlink.telemetry.FlightModes
 import kotlinx.coroutines.cancelChildren
 import kotlinx.coroutines.delay
@@ -284,7 +285,7 @@ public class QueueFlight(
     private suspend fun arrivalRadius(): Distance {
         config.arrivalRadius?.let { return it }
         if (!steering.isPlane) return QueueFlightConfig.MULTIROTOR_ARRIVAL
-        val name = if (vehicle.identity.value.autopilot == pod.core.vehicle.Autopilot.PX4) "NAV_LOITER_RAD" else "WP_LOITER_RAD"
+        val name = Firmware.of(vehicle.identity.value).loiterRadiusParam
         val loiter = try {
             withTimeoutOrNull(config.paramTimeout) { abs(vehicle.params.read(name).value) }
         } catch (e: pod.core.PodException) {

@@ -3,6 +3,7 @@ package pod.mavlink.telemetry
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.FlightMode
 import pod.core.vehicle.VehicleType
+import pod.mavlink.firmware.Firmware
 
 /**
  * Names of autopilot flight modes, from the custom_mode number a HEARTBEAT carries and back.
@@ -50,6 +51,7 @@ public object FlightModes {
      * that autopilot has no such mode.
      */
     public fun customMode(autopilot: Autopilot, type: VehicleType, name: String): Long? = when (autopilot) {
+        // Numbering, not behaviour: how each firmware encodes custom_mode is this codec's concern.
         Autopilot.PX4 -> {
             val parts = name.uppercase().split('.')
             val main = px4Main.entries.firstOrNull { it.value == parts[0] }?.key
@@ -71,51 +73,18 @@ public object FlightModes {
      * [ModeRole.HOLD] is a mode that keeps position and altitude with nobody on the sticks, since
      * a vehicle Pod flies may have no transmitter (or one with its throttle at minimum).
      */
-    public fun forRole(autopilot: Autopilot, type: VehicleType, role: ModeRole): String? = when {
-        autopilot == Autopilot.PX4 -> when (role) {
-            // Hold (AUTO.LOITER) loiters where it is at its current altitude, no stick input used
-            // (PX4 src/modules/navigator/loiter.cpp Loiter::on_activation -> set_loiter_position:
-            // a loiter item from the current position, braking first on a multicopter).
-            ModeRole.HOLD, ModeRole.GUIDED -> "AUTO.LOITER"
-            ModeRole.MISSION -> "AUTO.MISSION"
-            ModeRole.RETURN -> "AUTO.RTL"
-            ModeRole.LAND -> "AUTO.LAND"
-            ModeRole.TAKEOFF -> "AUTO.TAKEOFF"
-        }
-        type.isFixedWing -> when (role) {
-            // ArduPlane LOITER circles where it is at the current altitude under automatic
-            // throttle (ArduPlane/mode_loiter.cpp ModeLoiter::_enter: auto_throttle_mode,
-            // do_loiter_at_location from the current location); the stick does not set the height.
-            ModeRole.HOLD -> "LOITER"
-            ModeRole.GUIDED -> "GUIDED"
-            ModeRole.MISSION -> "AUTO"
-            ModeRole.RETURN -> "RTL"
-            ModeRole.LAND -> null
-            ModeRole.TAKEOFF -> "TAKEOFF"
-        }
-        else -> when (role) {
-            // BRAKE: stops and holds position and altitude on its own (ArduCopter/mode_brake.cpp
-            // ModeBrake::run: climb rate 0; init sets no timeout, which only failsafes set).
-            // Never LOITER or POSHOLD: they take the climb rate from the throttle stick, so with
-            // no transmitter (stick at minimum) they descend, land and disarm (mode_loiter.cpp
-            // ModeLoiter::run, mode_poshold.cpp: get_pilot_desired_climb_rate). Not GUIDED
-            // either: switching to GUIDED while in GUIDED changes nothing (mode.cpp
-            // Copter::set_mode returns at once for the current mode), so a goto would go on.
-            ModeRole.HOLD -> "BRAKE"
-            ModeRole.GUIDED, ModeRole.TAKEOFF -> "GUIDED"
-            ModeRole.MISSION -> "AUTO"
-            ModeRole.RETURN -> "RTL"
-            ModeRole.LAND -> "LAND"
-        }
-    }
+    public fun forRole(autopilot: Autopilot, type: VehicleType, role: ModeRole): String? =
+        Firmware.of(autopilot, type).modeFor(role)
 
     /** Every mode name Pod knows for [autopilot] flying [type]. */
     public fun names(autopilot: Autopilot, type: VehicleType): List<String> = when (autopilot) {
+        // The mode tables are numbering, kept beside their codec rather than in [Firmware].
         Autopilot.PX4 -> px4Main.values.filter { it != "AUTO" } + px4AutoSub.values.map { "AUTO.$it" } + px4PosctlSub.values.map { "POSCTL.$it" }
         else -> arduTable(type).values.toList()
     }
 
     private fun nameOf(autopilot: Autopilot, type: VehicleType, customMode: Long): String? = when (autopilot) {
+        // Numbering, not behaviour: the inverse of [customMode].
         Autopilot.PX4 -> {
             val main = Px4CustomMode.main(customMode)
             val sub = Px4CustomMode.sub(customMode)

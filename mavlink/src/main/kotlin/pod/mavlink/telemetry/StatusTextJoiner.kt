@@ -3,6 +3,7 @@ package pod.mavlink.telemetry
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.Severity
 import pod.core.vehicle.StatusText
+import pod.mavlink.firmware.Firmware
 
 /**
  * Joins STATUSTEXT chunks into the lines the autopilot wrote. A pure machine: the caller feeds it
@@ -47,7 +48,7 @@ internal class StatusTextJoiner(
     fun feed(severity: Severity, text: String, id: Int, chunkSeq: Int, nowNanos: Long, sender: Autopilot = Autopilot.GENERIC): List<StatusText> {
         val clean = text.substringBefore('\u0000')
         val out = ArrayList<StatusText>()
-        val numbersEveryText = sender == Autopilot.PX4
+        val numbersEveryText = Firmware.of(sender).numbersEveryStatusText
         if (id == 0 && !numbersEveryText) {
             out += StatusText(severity, clean)
             return out
