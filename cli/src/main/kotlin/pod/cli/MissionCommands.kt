@@ -21,6 +21,7 @@ import pod.cli.json.Event
 import pod.core.units.m
 import pod.mavlink.MavFrames
 import pod.mavlink.MavlinkVehicle
+import pod.mavlink.firmware.Firmware
 import pod.mavlink.mission.MissionWarnings
 import pod.mavlink.mission.InvalidMission
 import pod.mavlink.mission.MissionItem
@@ -192,9 +193,9 @@ internal class MissionDownloadCommand(out: Output) : MissionAction(out, "downloa
         finish("downloaded ${items(items.size, type)} from vehicle ${vehicle.systemId} to $file", vehicle, action = "download", items = items.size)
     }
 
-    // Line 0 of a PX4 mission file is the vehicle's home, which it reports once its estimator has an origin.
+    // Line 0 of a mission file is home; where the vehicle's own item 0 is not (PX4), the home it reports once its estimator has an origin.
     private suspend fun homeFor(vehicle: MavlinkVehicle, items: List<MissionItem>): Location? {
-        if (items.isEmpty() || type != MissionType.MISSION || vehicle.identity.value.autopilot == Autopilot.ARDUPILOT) return null
+        if (items.isEmpty() || type != MissionType.MISSION || Firmware.of(vehicle.identity.value).itemZeroIsHome) return null
         return withTimeoutOrNull(HOME_WAIT) { vehicle.telemetry.home.filterNotNull().first() }
     }
 
