@@ -31,14 +31,17 @@ import kotlin.math.roundToInt
 import kotlin.time.Duration.Companion.minutes
 import kotlin.time.Duration.Companion.seconds
 
-/** MAVProxy from the venv, routing [master] to [outs] and logging every frame to [tlog]; its output goes to [dir]/mavproxy.out. */
+/** MAVProxy from the venv, routing [master] to [outs] and logging every frame to [tlog] (flushed as written); its output goes to [dir]/mavproxy.out. */
 private fun startMavproxy(dir: File, master: Int, outs: List<Int>, tlog: File): Process {
     val script = File(File(Python.executable).parentFile, "mavproxy.py")
     check(script.isFile) { "no $script: run tools/python-peers.sh (it installs MAVProxy into .venv)" }
     return ProcessBuilder(
         listOf(Python.executable, script.path, "--master=udpin:127.0.0.1:$master") +
             outs.map { "--out=udpout:127.0.0.1:$it" } +
-            listOf("--logfile=${tlog.path}", "--state-basedir=${dir.path}", "--daemon", "--non-interactive"),
+            // flushlogs: MAVProxy's log writer otherwise leaves its tlog in a file buffer that only its
+            // exit flushes, and a SIGTERM can end it with the flight's last seconds unwritten
+            // (MAVProxy/mavproxy.py log_writer flushes "if mpstate.settings.flushlogs").
+            listOf("--logfile=${tlog.path}", "--state-basedir=${dir.path}", "--daemon", "--non-interactive", "--cmd=set flushlogs 1"),
     ).directory(dir).redirectErrorStream(true).redirectOutput(File(dir, "mavproxy.out")).start()
 }
 
