@@ -106,12 +106,6 @@ private fun hop(v: PlatformVehicle) = mission("hop ${v.name}") {
     returnHomeAndLand()
 }
 
-private fun circuit(v: PlatformVehicle) = mission("circuit ${v.name}") {
-    home(v.home.value!!)
-    takeOff(40.m)
-    move(north = 500.m, up = 20.m)
-    returnHomeAndLand()
-}
 
 private val SCENARIOS: List<Pair<String, Scenario>> = listOf(
     "mixed fleet" to Scenario(11, LOSS) {

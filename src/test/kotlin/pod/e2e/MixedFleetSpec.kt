@@ -33,13 +33,6 @@ private fun hop(v: PlatformVehicle) = mission("hop ${v.name}") {
     returnHomeAndLand()
 }
 
-/** A plane's circuit: take off, fly out, come back over home and land. */
-private fun circuit(v: PlatformVehicle) = mission("circuit ${v.name}") {
-    home(v.home.value!!)
-    takeOff(40.m)
-    move(north = 500.m, up = 20.m)
-    returnHomeAndLand()
-}
 
 /**
  * Programs on fleets of mixed autopilots and airframes, through the engine, in virtual time on a

@@ -3,7 +3,9 @@ package pod.e2e
 import kotlin.math.roundToLong
 import kotlinx.coroutines.async
 import pod.core.units.Location
+import pod.core.platform.PlatformVehicle
 import pod.core.units.m
+import pod.dsl.mission
 
 /** [this] moved [north] and [east] metres at [height] above home, on the wire's 10⁻⁷° grid. */
 internal fun Location.at(north: Int, east: Int, height: Double): Location =
@@ -30,4 +32,12 @@ internal suspend fun pod.core.platform.Platform.flyUntilLoitering(
         loitering.onAwait { run.cancel() }
         run.onAwait { error("the run of \"${mission.name}\" ended by itself; a mission ending in an unlimited loiter runs until cancelled") }
     }
+}
+
+/** A plane's circuit from [v]'s home: take off, fly 500 m out climbing 20 m, come back over home and land. */
+internal fun circuit(v: PlatformVehicle) = mission("circuit ${v.name}") {
+    home(v.home.value!!)
+    takeOff(40.m)
+    move(north = 500.m, up = 20.m)
+    returnHomeAndLand()
 }
