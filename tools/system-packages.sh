@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Installs the Debian packages the tests drive and the build cannot fetch itself: socat makes the
+# pseudo-terminal pairs that stand in for a serial telemetry radio in the serial-link tests.
+# Does nothing when every one is already installed; needs root (apt-get), as on CI.
+set -euo pipefail
+packages=(socat)
+missing=()
+for p in "${packages[@]}"; do
+  command -v "$p" >/dev/null 2>&1 || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+echo "system-packages: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq "${missing[@]}" >/dev/null
