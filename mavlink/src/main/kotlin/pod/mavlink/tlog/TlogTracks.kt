@@ -105,18 +105,26 @@ public class TrackRecorder(
                 is Heartbeat -> if (MavlinkEnums.isVehicle(message.type().value(), message.autopilot().value())) {
                     builders.getOrPut(decoded.systemId) { Builder() }.type = MavlinkEnums.vehicleType(message.type().value())
                 }
-                is GlobalPositionInt -> builders[decoded.systemId]?.add(
-                    Location(message.lat() / 1e7, message.lon() / 1e7, (message.alt() / 1000.0).m),
-                    timestampMicros,
-                    stepMetres,
-                )
-                is HomePosition -> builders[decoded.systemId]?.home =
-                    Location(message.latitude() / 1e7, message.longitude() / 1e7, (message.altitude() / 1000.0).m)
+                // A frame can pass its checksum and still carry nonsense (a buggy or hostile sender, a
+                // corrupt log): a position off the globe is skipped, as VehicleTelemetry skips it live.
+                is GlobalPositionInt -> locationOf(message.lat(), message.lon(), message.alt())?.let {
+                    builders[decoded.systemId]?.add(it, timestampMicros, stepMetres)
+                }
+                is HomePosition -> locationOf(message.latitude(), message.longitude(), message.altitude())?.let {
+                    builders[decoded.systemId]?.home = it
+                }
             }
         }
     }
 
     private companion object {
+        /** The location of degrees × 1e7 and millimetres, or null when it is not on the globe. */
+        fun locationOf(latE7: Int, lonE7: Int, altMm: Int): Location? {
+            val lat = latE7 / 1e7
+            val lon = lonE7 / 1e7
+            return if (lat in -90.0..90.0 && lon in -180.0..180.0) Location(lat, lon, (altMm / 1000.0).m) else null
+        }
+
         val TRACK_MESSAGES = setOf(MessageIds.HEARTBEAT, MessageIds.GLOBAL_POSITION_INT, MessageIds.HOME_POSITION)
     }
 
