@@ -32,7 +32,12 @@ public class SignatureCheck(private val key: SigningKey) : SignedReceive {
  * path when one exists) must accept exactly the authentic frames the MAVLink signing rules call
  * fresh: a frame signed with the key, unaltered, whose timestamp is above its stream's last accepted
  * one (a new stream's no more than a minute behind the receiver's time). The oracle is that rule,
- * kept here beside the code it checks.
+ * kept here beside the code it checks, as the MAVLink C library applies it (mavlink/c_library_v2,
+ * mavlink_helpers.h, `mavlink_signature_check`: the signature first, then a new stream refused when
+ * `timestamp + 6000*1000 < signing->timestamp`, a known one when `timestamp <= last`; stream state
+ * changes only for a frame that passed). Two things that function also does are not modelled: it
+ * refuses new streams beyond MAVLINK_MAX_SIGNING_STREAMS, and it moves its own time up to the
+ * newest timestamp accepted.
  */
 public class SignedFrameReceive(
     private val corpus: FuzzCorpus,
