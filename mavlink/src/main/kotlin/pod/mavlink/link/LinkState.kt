@@ -16,6 +16,8 @@ public sealed class LinkState {
         public val reason: String,
         /** Whether the link is trying to reopen by itself. */
         public val reopens: Boolean,
+        /** Attempts to reopen that failed so far in this outage (the device still missing). */
+        public val failedReopens: Int = 0,
     ) : LinkState()
 
     /** Closed by its owner; nothing more happens. */

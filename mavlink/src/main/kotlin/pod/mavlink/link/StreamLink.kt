@@ -144,6 +144,7 @@ internal class StreamLink(
                 policy.open()
             } catch (e: LinkException) {
                 failedReopens.incrementAndGet()
+                (_state.value as? LinkState.Down)?.let { _state.compareAndSet(it, it.copy(failedReopens = it.failedReopens + 1)) }
                 wait = minOf(wait * 2, policy.longest)
                 continue
             }
