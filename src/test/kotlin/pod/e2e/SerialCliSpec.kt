@@ -10,7 +10,10 @@ import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.runInterruptible
 import kotlinx.coroutines.withTimeout
 import pod.cli.Output
+import pod.cli.json.Event
 import pod.mavlink.GroundStation
+import pod.sim.SimVehicle
+import pod.sim.SimVehicleConfig
 import kotlin.time.Duration.Companion.seconds
 import pod.cli.run as runPod
 
@@ -32,6 +35,26 @@ class SerialCliSpec : StringSpec({
                 } finally {
                     sim.cancel()
                     gcs.close()
+                }
+            }
+        }
+    }
+
+    "pod watch --connect serial:… --json finds the vehicle on the other end of the pair" {
+        Socat.pair().use { pair ->
+            coroutineScope {
+                val sim = SimVehicle(SimVehicleConfig(systemId = 43, gcs = "serial://${pair.b}:57600"))
+                sim.start(this)
+                try {
+                    val out = Captured()
+                    val watching = async(Dispatchers.IO) {
+                        runPod(listOf("watch", "--connect", "serial://${pair.a}:57600", "--json", "--duration", "4s"), out, Output { System.err.println(it) })
+                    }
+                    withTimeout(20.seconds) { out.eventsOf<Event.Found>().first() }.sysid shouldBe 43
+                    withTimeout(20.seconds) { watching.await() } shouldBe 0
+                    out.events.first() shouldBe Event.Listening("serial://${pair.a}:57600", 0)
+                } finally {
+                    sim.stop()
                 }
             }
         }
