@@ -4,6 +4,9 @@ import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
+import io.kotest.property.Arb
+import io.kotest.property.arbitrary.long
+import io.kotest.property.checkAll
 import kotlinx.coroutines.CoroutineStart
 import kotlinx.coroutines.ExperimentalCoroutinesApi
 import kotlinx.coroutines.async
@@ -12,8 +15,14 @@ import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.test.runTest
+import pod.mavlink.codec.FrameDecoder
+import pod.mavlink.codec.MavFrame
+import pod.mavlink.codec.TestFrames
+import pod.mavlink.codec.decodeAll
+import pod.mavlink.codec.toHex
 import java.io.IOException
 import java.util.concurrent.CopyOnWriteArrayList
+import kotlin.random.Random
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 
@@ -63,6 +72,24 @@ class StreamLinkTest : StringSpec({
         }
     }
 
+    "frames carried by a stream link and cut anywhere decode to the frames one datagram each would give" {
+        checkAll(60, Arb.long()) { seed ->
+            val random = Random(seed)
+            val frames = List(1 + random.nextInt(24)) { TestFrames.random(random) }
+            val asDatagrams = frames.flatMap { FrameDecoder().decodeAll(it) }.map(::describe)
+            val stream = ScriptedStream()
+            TestFrames.split(frames.reduce { a, b -> a + b }, random).forEach { stream.reads.trySend(it) }
+            stream.end()
+            val decoder = FrameDecoder()
+            val got = mutableListOf<String>()
+            runTest {
+                val link = link(stream, reopening = null)
+                shouldThrow<LinkException> { link.receive { _, bytes -> decoder.feed(bytes) { got += describe(it) } } }
+            }
+            got shouldBe asDatagrams
+        }
+    }
+
     "close() during the retries ends receive at once and the device is not tried again" {
         runTest {
             val stream = ScriptedStream()
@@ -80,6 +107,9 @@ class StreamLinkTest : StringSpec({
     }
 })
 
+private fun describe(frame: MavFrame): String =
+    "v${frame.version} seq ${frame.sequence} ${frame.systemId}/${frame.componentId} id ${frame.messageId} ${frame.payload.toHex()} ${frame.signature?.toHex()}"
+
 private fun link(first: ByteStream, reopening: Reopening?) =
     StreamLink(LinkAddress.Serial("/dev/test", 57600), "test link", "was closed by the remote", first, "peer", 0, reopening)
 
@@ -90,10 +120,15 @@ private class ScriptedStream(private val failWrites: Boolean = false) : ByteStre
 
     fun end() = reads.close()
 
+    private var pending = ByteArray(0)
+
+    // Hands out each chunk as it came, in pieces when it is larger than the reader's buffer.
     override suspend fun read(buffer: ByteArray): Int {
-        val chunk = reads.receiveCatching().getOrNull() ?: return -1
-        chunk.copyInto(buffer)
-        return chunk.size
+        if (pending.isEmpty()) pending = reads.receiveCatching().getOrNull() ?: return -1
+        val n = minOf(pending.size, buffer.size)
+        pending.copyInto(buffer, 0, 0, n)
+        pending = pending.copyOfRange(n, pending.size)
+        return n
     }
 
     override suspend fun write(bytes: ByteArray): Int {
