@@ -15,6 +15,9 @@ import java.io.IOException
  * device node vanish; the link then goes [LinkState.Down] and opens the same path again every
  * 250 ms to 1 s until the device is back. The path is resolved afresh each time, so a
  * `/dev/serial/by-id/…` link, or a pseudo-terminal pair's symlink, finds the new node.
+ * pymavlink does the same only when asked (`mavlink_connection(..., autoreconnect=True)`:
+ * `mavserial.reset` in mavutil.py reopens the same device after a failed write); here it is the
+ * default, and reads notice the loss too, so a station that only listens sees it.
  */
 internal object SerialLink {
     /** How long a read waits for bytes before checking that the device is still there. */
