@@ -16,6 +16,7 @@ import pod.cli.script.ScriptOutcome
 import pod.launch.FleetChoice
 import pod.launch.Interruption
 import pod.launch.interruptionIn
+import pod.mavlink.link.DeviceNotFound
 import pod.mavlink.link.LinkAddress
 import pod.mavlink.link.LinkException
 import pod.mavlink.link.PortInUse
@@ -36,7 +37,7 @@ internal class RunCommand : CliktCommand(name = "run") {
     private val script by argument("SCRIPT", help = "a .main.kts script")
     private val scriptArgs by argument("ARGS", help = "passed to the script as args (put them after --)").multiple()
     private val sim by option("--sim", metavar = "N", help = "fly N simulated vehicles (default: 4)").int().restrictTo(1..254)
-    private val connect by option("--connect", metavar = "ADDR", help = "fly the vehicles on this link (udpin://0.0.0.0:14550, …)")
+    private val connect by option("--connect", metavar = "ADDR", help = "fly the vehicles on this link (udpin://0.0.0.0:14550, serial:///dev/ttyUSB0:57600, …)")
     private val timeScale by option("--time-scale", metavar = "X", help = "vehicle seconds per real second (default: 1): the simulated fleet's with --sim; with --connect, that of a simulator run faster (pod sim --time-scale X), so the program's durations count in vehicle time")
         .double().restrictTo(0.01..1000.0)
 
@@ -91,6 +92,7 @@ internal class RunCommand : CliktCommand(name = "run") {
                 // A port that cannot be bound is bad input (exit 2), found before the script compiles.
                 // Only listening is tried: it takes nothing from anyone, where a TCP connect would.
                 if (parsed is LinkAddress.UdpIn && parsed.port != 0) tryListening(parsed)
+                if (parsed is LinkAddress.Serial && parsed.path.startsWith("/") && !java.io.File(parsed.path).exists()) badInput(DeviceNotFound(parsed).message!!)
                 FleetChoice.Connect(address, timeScale ?: 1.0)
             }
             else -> FleetChoice.Sim(sim ?: 4, timeScale ?: 1.0)

@@ -24,7 +24,8 @@ internal class SimCommand(private val out: Output) : CliktCommand(name = "sim") 
     private val vehicles by option("--vehicles", help = "how many vehicles").int().restrictTo(1..254).default(1)
     private val target by option(
         "--out",
-        help = "where telemetry goes, like SITL's --out; with udpin:HOST:PORT the vehicles listen, vehicle i on PORT+i",
+        help = "where telemetry goes, like SITL's --out; with udpin:HOST:PORT the vehicles listen, vehicle i on PORT+i; " +
+            "serial:///dev/ttyUSB0:57600 (one vehicle) talks over a serial port",
     ).default("udpout:127.0.0.1:14550")
     private val type by option("--type", help = "airframe").choice("quad" to VehicleType.QUADROTOR, "plane" to VehicleType.FIXED_WING)
         .default(VehicleType.QUADROTOR, defaultForHelp = "quad")
@@ -44,6 +45,7 @@ internal class SimCommand(private val out: Output) : CliktCommand(name = "sim") 
         if (address is LinkAddress.UdpIn && address.port != 0 && address.port + vehicles - 1 > 65535) {
             badInput("--out $target with --vehicles $vehicles needs ports ${address.port}..${address.port + vehicles - 1}, past 65535")
         }
+        if (address is LinkAddress.Serial && vehicles > 1) badInput("--out $target: a serial port carries one simulated vehicle, not $vehicles")
         val fleet = reportingLinkErrors {
             SimFleet.start(
                 vehicles, this,
@@ -58,7 +60,11 @@ internal class SimCommand(private val out: Output) : CliktCommand(name = "sim") 
                     EventJson.encode(Event.Started(c.systemId, c.type.name, c.autopilot.name, v.localPort, own.toString()))
                 } else {
                     "vehicle ${c.systemId}: ${c.type.name.lowercase()} on ${c.autopilot.name.lowercase()}, " +
-                        if (own is LinkAddress.UdpIn) "listening on ${own.copy(port = v.localPort ?: own.port)}" else "sending from port ${v.localPort} to $own"
+                        when (own) {
+                            is LinkAddress.UdpIn -> "listening on ${own.copy(port = v.localPort ?: own.port)}"
+                            is LinkAddress.Serial -> "on $own"
+                            else -> "sending from port ${v.localPort} to $own"
+                        }
                 },
             )
         }

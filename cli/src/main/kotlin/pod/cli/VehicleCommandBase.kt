@@ -43,7 +43,7 @@ import pod.core.units.toReadable
  * a line says how (an `interrupted` JSON object with `--json`) and the command exits with 130.
  */
 internal abstract class VehicleCommandBase(protected val out: Output, name: String) : CliktCommand(name = name) {
-    private val connect by option("--connect", help = "link to the vehicle (udpin:, udpout:, tcp:)").default("udpin:0.0.0.0:14550")
+    private val connect by option("--connect", help = "link to the vehicle (udpin:, udpout:, tcp:, serial:///dev/ttyUSB0:57600)").default("udpin:0.0.0.0:14550")
     private val sysid by option("--sysid", help = "the vehicle's system id (needed when several answer)").int().restrictTo(1..255)
     protected val json by option("--json", help = "JSON lines instead of text").flag()
     private val wait by option("--wait", help = "how long to wait for the vehicle's heartbeat ($DURATION_FORMAT)")

@@ -24,7 +24,7 @@ import kotlin.time.Duration.Companion.seconds
 
 /** `pod watch`: shows every vehicle on a link, Pod's or not, live. */
 internal class WatchCommand(private val out: Output) : CliktCommand(name = "watch") {
-    private val connect by option("--connect", help = "link to listen on or connect to (udpin:, udpout:, tcp:)")
+    private val connect by option("--connect", help = "link to listen on or connect to (udpin:, udpout:, tcp:, serial:///dev/ttyUSB0:57600)")
         .default("udpin:0.0.0.0:14550")
     private val json by option("--json", help = "one JSON object per event or update, per line").flag()
     private val duration by option("--duration", help = "stop after this long ($DURATION_FORMAT); default: until interrupted")

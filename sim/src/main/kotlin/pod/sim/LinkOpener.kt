@@ -5,7 +5,7 @@ import pod.mavlink.link.MavlinkLink
 import pod.mavlink.link.MemoryNetwork
 
 /**
- * How a simulated vehicle or fleet opens its links: UDP sockets ([Udp]) or links on a
+ * How a simulated vehicle or fleet opens its links: UDP sockets or serial ports ([Udp]) or links on a
  * [MemoryNetwork] ([memory]), which run in that network's virtual time.
  */
 public fun interface LinkOpener {
@@ -13,7 +13,7 @@ public fun interface LinkOpener {
     public suspend fun open(address: LinkAddress): MavlinkLink
 
     public companion object {
-        /** Real sockets, as [MavlinkLink.open]. */
+        /** Real sockets and devices (UDP, TCP, serial), as [MavlinkLink.open]. */
         public val Udp: LinkOpener = LinkOpener { MavlinkLink.open(it) }
 
         /** Links on [network]: the same addresses, no sockets. */

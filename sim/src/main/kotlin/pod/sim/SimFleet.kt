@@ -29,7 +29,8 @@ public class SimFleet private constructor(
          * with its home [spacing] metres east of the previous one.
          *
          * When [base] listens (`udpin://host:port`, port not 0), vehicle i listens on port + i, as
-         * SITL's instances each take their own port: one port cannot be bound twice.
+         * SITL's instances each take their own port: one port cannot be bound twice. A serial
+         * [base] carries one vehicle (a device is opened once).
          *
          * Every vehicle reads [timebase] and opens its link with [openLink] (see [SimVehicle]).
          */
@@ -46,7 +47,9 @@ public class SimFleet private constructor(
             require(firstSystemId in 1..254 && firstSystemId + count - 1 <= 254) {
                 "system ids $firstSystemId..${firstSystemId + count - 1} must lie within 1..254"
             }
-            val listen = LinkAddress.parse(base.gcs) as? LinkAddress.UdpIn
+            val own = LinkAddress.parse(base.gcs)
+            require(own !is LinkAddress.Serial || count == 1) { "a serial port (${base.gcs}) carries one simulated vehicle, not $count" }
+            val listen = own as? LinkAddress.UdpIn
             if (listen != null && listen.port != 0) {
                 require(listen.port + count - 1 <= 65535) { "ports ${listen.port}..${listen.port + count - 1} for $count listening vehicles go past 65535" }
             }

@@ -2,7 +2,8 @@ package pod.mavlink.link
 
 /**
  * Where a MAVLink link goes, parsed from a connection string in either the MAVSDK form
- * (`udpin://0.0.0.0:14550`) or the pymavlink form (`udpin:0.0.0.0:14550`).
+ * (`udpin://0.0.0.0:14550`, `serial:///dev/ttyUSB0:57600`) or the pymavlink form
+ * (`udpin:0.0.0.0:14550`, `/dev/ttyUSB0,57600`).
  */
 public sealed class LinkAddress {
     /** Host name or address. */
@@ -43,17 +44,42 @@ public sealed class LinkAddress {
         override fun toString(): String = "tlog:$path"
     }
 
+    /**
+     * A serial device (a telemetry radio, a flight controller's USB port) at [baud], 8N1, no flow
+     * control ([SerialLink]). It has no host ([host] is empty) and no port ([port] is 0).
+     */
+    public data class Serial(
+        /** The device: `/dev/ttyUSB0`, `/dev/serial/by-id/…`, or `COM3` on Windows. */
+        public val path: String,
+        /** Bits per second, > 0. */
+        public val baud: Int,
+    ) : LinkAddress() {
+        init {
+            require(path.isNotBlank()) { "path must not be empty" }
+            require(baud > 0) { "baud must be > 0, was $baud" }
+        }
+
+        override val host: String get() = ""
+        override val port: Int get() = 0
+
+        override fun toString(): String = "serial://$path:$baud"
+    }
+
     public companion object {
         private val FORM = Regex("""^(udpin|udpout|udp|tcp)(?::/{2}|:)(\[[^\]]+]|[^:/\[\]]*):(\d{1,5})$""")
 
         /**
          * Parses [text]; throws [InvalidConnectionString] naming what is wrong. `udp://` is read as
-         * `udpin` (MAVSDK's meaning).
+         * `udpin` (MAVSDK's meaning). Serial devices: `serial:///dev/ttyUSB0:57600` (MAVSDK: the
+         * baud is required), `/dev/ttyUSB0,57600` or a bare `/dev/ttyUSB0` (pymavlink: 115200 when
+         * not given), and `COM3` forms of both.
          */
         public fun parse(text: String): LinkAddress {
+            SerialAddresses.parse(text)?.let { return it }
             val match = FORM.matchEntire(text.trim()) ?: throw InvalidConnectionString(
                 text,
-                "expected udpin://HOST:PORT, udpout://HOST:PORT or tcp://HOST:PORT (or udpin:HOST:PORT, …)",
+                "expected udpin://HOST:PORT, udpout://HOST:PORT, tcp://HOST:PORT or serial://DEVICE:BAUD " +
+                    "(or udpin:HOST:PORT, …, DEVICE,BAUD)",
             )
             val (scheme, rawHost, rawPort) = match.destructured
             val port = rawPort.toInt()

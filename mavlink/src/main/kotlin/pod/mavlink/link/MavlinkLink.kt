@@ -1,8 +1,8 @@
 package pod.mavlink.link
 
 /**
- * A byte pipe to MAVLink peers: a UDP socket (listening or sending to one address) or a TCP
- * connection. It knows nothing of frames; [pod.mavlink.GroundStation] parses what it receives.
+ * A byte pipe to MAVLink peers: a UDP socket (listening or sending to one address), a TCP
+ * connection or a serial port ([ByteStreamLink] for the last two). It knows nothing of frames; [pod.mavlink.GroundStation] parses what it receives.
  *
  * @see open
  */
@@ -18,7 +18,7 @@ public interface MavlinkLink {
 
     /**
      * Receives until the link is closed or the caller is cancelled, calling [onBytes] for every
-     * datagram (UDP) or chunk (TCP), one call at a time, in the order they arrived. A UDP link
+     * datagram (UDP) or chunk (TCP, serial), one call at a time, in the order they arrived. A UDP link
      * calls it on a receive thread of its own (no hand-off per datagram), other links on the
      * caller's dispatcher: [onBytes] must not block and must publish what it changes safely for
      * other threads. Throws [LinkException] if the link breaks (a TCP server hanging up); returns
@@ -61,11 +61,13 @@ public interface MavlinkLink {
         /**
          * Opens a link on [address]: binds or connects now, so a port in use or an unknown host
          * fails here with [PortInUse] or [HostUnreachable]. A [LinkAddress.Replay] plays its tlog
-         * back in real time (a missing file throws [pod.mavlink.tlog.TlogException]).
+         * back in real time (a missing file throws [pod.mavlink.tlog.TlogException]). A
+         * [LinkAddress.Serial] opens its device now: [DeviceNotFound] or [DeviceUnavailable].
          */
         public suspend fun open(address: LinkAddress): MavlinkLink = when (address) {
             is LinkAddress.UdpIn, is LinkAddress.UdpOut -> UdpLink.open(address)
             is LinkAddress.Tcp -> TcpLink.open(address)
+            is LinkAddress.Serial -> SerialLink.open(address)
             is LinkAddress.Replay -> pod.mavlink.tlog.TlogReplayLink.open(java.nio.file.Path.of(address.path))
         }
 

@@ -41,7 +41,7 @@ public class MemoryNetwork(
         val local = when (address) {
             is LinkAddress.UdpIn -> InetSocketAddress(address.host, if (address.port == 0) ephemeral() else address.port)
             is LinkAddress.UdpOut -> InetSocketAddress(LOOPBACK, ephemeral())
-            is LinkAddress.Tcp, is LinkAddress.Replay -> throw LinkException("a memory network carries UDP only, not $address")
+            is LinkAddress.Tcp, is LinkAddress.Replay, is LinkAddress.Serial -> throw LinkException("a memory network carries UDP only, not $address")
         }
         if (local in bound) throw PortInUse(address)
         val remote = (address as? LinkAddress.UdpOut)?.let { LinkPeer(InetSocketAddress(it.host, it.port)) }

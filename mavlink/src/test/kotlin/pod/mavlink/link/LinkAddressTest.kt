@@ -22,7 +22,8 @@ class LinkAddressTest : StringSpec({
 
     "a bad connection string names what was expected" {
         listOf(
-            Pair("serial:/dev/ttyUSB0", "expected udpin://"),
+            Pair("serial:/dev/ttyUSB0", "needs a baud rate after the device"),
+            Pair("ttyUSB0", "expected udpin://"),
             Pair("udpin://0.0.0.0", "expected udpin://"),
             Pair("udpout://127.0.0.1:99999", "port must be 0..65535, was 99999"),
             Pair("udpout://127.0.0.1:0", "udpout needs a destination port"),
