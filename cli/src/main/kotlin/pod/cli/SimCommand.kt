@@ -4,7 +4,7 @@ import com.github.ajalt.clikt.core.CliktCommand
 import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.parameters.options.default
 import com.github.ajalt.clikt.parameters.options.flag
-import com.github.ajalt.clikt.parameters.options.multiple
+import com.github.ajalt.clikt.parameters.options.transformAll
 import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.choice
 import com.github.ajalt.clikt.parameters.types.double
@@ -22,13 +22,15 @@ import pod.sim.LinkOpener
 import pod.sim.SimFleet
 import pod.sim.SimVehicleConfig
 
+private const val DEFAULT_OUT = "udpout:127.0.0.1:14550"
+
 /** `pod sim`: simulated vehicles sending to a ground station, until interrupted. */
 internal class SimCommand(private val out: Output) : CliktCommand(name = "sim") {
     private val vehicles by option("--vehicles", help = "how many vehicles").int().restrictTo(1..254).default(1)
     private val targets by option(
         "--out",
         help = "where telemetry goes, like SITL's --out (repeat it for several ground stations); with udpin:HOST:PORT the vehicles listen, vehicle i on PORT+i",
-    ).multiple(default = listOf("udpout:127.0.0.1:14550"))
+    ).transformAll(defaultForHelp = DEFAULT_OUT) { it.ifEmpty { listOf(DEFAULT_OUT) } }
     private val target: String get() = targets.first()
     private val type by option("--type", help = "airframe").choice("quad" to VehicleType.QUADROTOR, "plane" to VehicleType.FIXED_WING)
         .default(VehicleType.QUADROTOR, defaultForHelp = "quad")
