@@ -4,6 +4,7 @@ import com.github.ajalt.clikt.core.CliktCommand
 import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.parameters.options.default
 import com.github.ajalt.clikt.parameters.options.flag
+import com.github.ajalt.clikt.parameters.options.transformAll
 import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.choice
 import com.github.ajalt.clikt.parameters.types.double
@@ -16,17 +17,22 @@ import pod.cli.json.EventJson
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleType
 import pod.mavlink.link.LinkAddress
+import pod.sim.FanOutOpener
+import pod.sim.LinkOpener
 import pod.sim.SimFleet
 import pod.sim.SimVehicleConfig
+
+private const val DEFAULT_OUT = "udpout:127.0.0.1:14550"
 
 /** `pod sim`: simulated vehicles sending to a ground station, until interrupted. */
 internal class SimCommand(private val out: Output) : CliktCommand(name = "sim") {
     private val vehicles by option("--vehicles", help = "how many vehicles").int().restrictTo(1..254).default(1)
-    private val target by option(
+    private val targets by option(
         "--out",
-        help = "where telemetry goes, like SITL's --out; with udpin:HOST:PORT the vehicles listen, vehicle i on PORT+i; " +
+        help = "where telemetry goes, like SITL's --out (repeat it for several ground stations); with udpin:HOST:PORT the vehicles listen, vehicle i on PORT+i; " +
             "serial:///dev/ttyUSB0:57600 (one vehicle) talks over a serial port",
-    ).default("udpout:127.0.0.1:14550")
+    ).transformAll(defaultForHelp = DEFAULT_OUT) { it.ifEmpty { listOf(DEFAULT_OUT) } }
+    private val target: String get() = targets.first()
     private val type by option("--type", help = "airframe").choice("quad" to VehicleType.QUADROTOR, "plane" to VehicleType.FIXED_WING)
         .default(VehicleType.QUADROTOR, defaultForHelp = "quad")
     private val autopilot by option("--autopilot", help = "autopilot flavour")
@@ -40,16 +46,19 @@ internal class SimCommand(private val out: Output) : CliktCommand(name = "sim") 
     override fun help(context: Context): String = "Run simulated MAVLink vehicles until interrupted."
 
     override fun run() = runBlocking {
-        val address = reportingLinkErrors { LinkAddress.parse(target) }
+        val addresses = reportingLinkErrors { targets.map(LinkAddress::parse) }
         if (sysid + vehicles - 1 > 254) badInput("--sysid $sysid with --vehicles $vehicles goes past system id 254")
-        if (address is LinkAddress.UdpIn && address.port != 0 && address.port + vehicles - 1 > 65535) {
-            badInput("--out $target with --vehicles $vehicles needs ports ${address.port}..${address.port + vehicles - 1}, past 65535")
+        for ((text, address) in targets.zip(addresses)) {
+            if (address is LinkAddress.UdpIn && address.port != 0 && address.port + vehicles - 1 > 65535) {
+                badInput("--out $text with --vehicles $vehicles needs ports ${address.port}..${address.port + vehicles - 1}, past 65535")
+            }
+            if (address is LinkAddress.Serial && vehicles > 1) badInput("--out $text: a serial port carries one simulated vehicle, not $vehicles")
         }
-        if (address is LinkAddress.Serial && vehicles > 1) badInput("--out $target: a serial port carries one simulated vehicle, not $vehicles")
         val fleet = reportingLinkErrors {
             SimFleet.start(
                 vehicles, this,
                 SimVehicleConfig(systemId = sysid, type = type, autopilot = autopilot, gcs = target, timeScale = speedup),
+                openLink = if (addresses.size > 1) FanOutOpener(addresses) else LinkOpener.Udp,
             )
         }
         for (v in fleet.vehicles) {
@@ -64,7 +73,8 @@ internal class SimCommand(private val out: Output) : CliktCommand(name = "sim") 
                             is LinkAddress.UdpIn -> "listening on ${own.copy(port = v.localPort ?: own.port)}"
                             is LinkAddress.Serial -> "on $own"
                             else -> "sending from port ${v.localPort} to $own"
-                        }
+                        } +
+                        addresses.drop(1).joinToString("") { ", and to $it" }
                 },
             )
         }

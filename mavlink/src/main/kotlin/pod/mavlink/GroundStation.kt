@@ -67,6 +67,7 @@ public class GroundStation private constructor(
     @Volatile private var handlerErrors = 0L
     @Volatile private var trackingErrors = 0L
     private val taps = FrameTaps(config.clock)
+    private val forwarding = pod.mavlink.route.StationForwarding(link, codec)
     private val registry = VehicleRegistry(this, config.lostAfter, StreamRequests(scope, config, ::linkBroken)) { guarded(it) }
 
     /** Vehicles heard so far by system id, lost ones included (see [MavlinkVehicle.connection]). */
@@ -153,6 +154,18 @@ public class GroundStation private constructor(
         link.sendToAll(encode(message))
     }
 
+    /**
+     * Serves this station's vehicles to another ground station (QGroundControl, MAVProxy) on
+     * [other] too: every frame heard here goes there as it came, and what comes back is routed to
+     * the vehicles, by mavlink-router's rules ([pod.mavlink.route.MavlinkRouter]). Close the
+     * returned router to stop (it closes [other]); closing the station stops it as well.
+     */
+    public fun forwardTo(other: MavlinkLink): pod.mavlink.route.MavlinkRouter =
+        forwarding.start(other, scope, pod.mavlink.route.RouterConfig(timebase = config.timebase))
+
+    /** Opens [connection] (as [GroundStation.open] takes it) and [forwardTo]s it. */
+    public suspend fun forwardTo(connection: String): pod.mavlink.route.MavlinkRouter = forwardTo(MavlinkLink.open(connection))
+
     /** Stops every coroutine of this station and closes its link. */
     public fun close() {
         scope.cancel()
@@ -216,6 +229,7 @@ public class GroundStation private constructor(
         val decoder = decoders.decoderFor(peer)
         decoder.feed(bytes) { frame ->
             if (taps.active) taps.onFrame(FrameDirection.RECEIVED, encoder.wireBytes(frame))
+            if (forwarding.active) forwarding.onFrame(peer, frame)
             try {
                 route(peer, frame)
             } catch (e: Exception) {

@@ -35,6 +35,7 @@ private val samples: List<Event> = listOf(
         link = 0.99, lostFrames = 2,
     ),
     Event.Started(1, "QUADROTOR", "PX4", 40123, "udpout://127.0.0.1:14550"),
+    RouteSummary("udpin://0.0.0.0:14550", 14550, 2, 1200, 640, 3, 1, 0, 0, error = null, final = true),
     Event.Waiting(7, "a GPS fix"),
     Event.Progress("uploading", 3, 25),
     Event.Done("param-get", 7, "STABILIZE", false, 0.0, items = null, name = "WPNAV_SPEED", value = 500.0, type = "REAL32"),
