@@ -22,7 +22,7 @@ class Pod(out: Output = TerminalOutput.standard()) : CliktCommand(name = "pod") 
     init {
         // Every option's help says its default; subcommands inherit the formatter from this context.
         configureContext { helpFormatter = { MordantHelpFormatter(it, showDefaultValues = true) } }
-        subcommands(listOf(SimCommand(out), WatchCommand(out), ReplayCommand(out), DemoCommand(out), MapCommand(out), SurveyCommand(out), RunCommand(), MissionGroup(out), ParamGroup(out), pod.cli.queue.QueueGroup(out)) + actionCommands(out))
+        subcommands(listOf(SimCommand(out), WatchCommand(out), ReplayCommand(out), DemoCommand(out), MapCommand(out), SurveyCommand(out), RunCommand(), MissionGroup(out), ParamGroup(out), pod.cli.queue.QueueGroup(out), SigningGroup(out)) + actionCommands(out))
         subcommands(RouteCommand(out))
     }
 

@@ -42,6 +42,7 @@ internal class SimCommand(private val out: Output) : CliktCommand(name = "sim") 
         .double().restrictTo(0.01..1000.0).default(1.0)
     private val sysid by option("--sysid", help = "system id of the first vehicle").int().restrictTo(1..254).default(1)
     private val json by option("--json", help = "JSON lines instead of text").flag()
+    private val keyFile by keyFileOption()
 
     override fun help(context: Context): String = "Run simulated MAVLink vehicles until interrupted."
 
@@ -57,7 +58,7 @@ internal class SimCommand(private val out: Output) : CliktCommand(name = "sim") 
         val fleet = reportingLinkErrors {
             SimFleet.start(
                 vehicles, this,
-                SimVehicleConfig(systemId = sysid, type = type, autopilot = autopilot, gcs = target, timeScale = speedup),
+                SimVehicleConfig(systemId = sysid, type = type, autopilot = autopilot, gcs = target, timeScale = speedup, signingKey = signingKey(keyFile)),
                 openLink = if (addresses.size > 1) FanOutOpener(addresses) else LinkOpener.Udp,
             )
         }

@@ -23,6 +23,8 @@ import pod.core.vehicle.VehicleLost
 import pod.launch.Interruption
 import pod.launch.Interrupted
 import pod.mavlink.GroundStation
+import pod.mavlink.GroundStationConfig
+import pod.mavlink.signing.SigningKey
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.action.ActionException
 import pod.mavlink.command.CommandException
@@ -46,8 +48,15 @@ internal abstract class VehicleCommandBase(protected val out: Output, name: Stri
     private val connect by option("--connect", help = "link to the vehicle (udpin:, udpout:, tcp:, serial:///dev/ttyUSB0:57600)").default("udpin:0.0.0.0:14550")
     private val sysid by option("--sysid", help = "the vehicle's system id (needed when several answer)").int().restrictTo(1..255)
     protected val json by option("--json", help = "JSON lines instead of text").flag()
+    protected val keyFile by keyFileOption()
     private val wait by option("--wait", help = "how long to wait for the vehicle's heartbeat ($DURATION_FORMAT)")
         .convert { it.toDurationOrNull() ?: fail(NOT_A_DURATION.format(it)) }.default(10.seconds)
+
+    /** The station's configuration: signed with [key] (from `--key-file` or `$POD_SIGNING_KEY`) when there is one. */
+    protected open fun stationConfig(key: SigningKey?): GroundStationConfig = signedConfig(key)
+
+    /** The station [act] runs on (set before it runs). */
+    protected lateinit var station: GroundStation
 
     /** Checks local inputs (files) before any link is opened. */
     protected open fun prepare() {}
@@ -75,7 +84,8 @@ internal abstract class VehicleCommandBase(protected val out: Output, name: Stri
 
     override fun run() = runBlocking {
         prepare()
-        val gcs = reportingLinkErrors { GroundStation.open(connect, this) }
+        val gcs = reportingLinkErrors { GroundStation.open(connect, this, stationConfig(signingKey(keyFile))) }
+        station = gcs
         try {
             val vehicle = pick(gcs, wait)
             val awaiting = launch { showAwaiting(vehicle) }

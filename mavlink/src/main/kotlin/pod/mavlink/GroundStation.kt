@@ -24,6 +24,7 @@ import pod.mavlink.codec.MessageCodec
 import pod.mavlink.link.LinkException
 import pod.mavlink.link.LinkPeer
 import pod.mavlink.link.MavlinkLink
+import pod.mavlink.signing.SignedFrames
 import pod.mavlink.tlog.FrameDirection
 import pod.mavlink.tlog.FrameTap
 import pod.mavlink.tlog.FrameTaps
@@ -61,6 +62,7 @@ public class GroundStation private constructor(
     private val encoder = FrameEncoder(codec)
     private val sequences = SequenceNumbers()
     private val decoders = PeerDecoders(config.maxPeers, codec)
+    private val signing = config.signing?.let { SignedFrames(it, codec) }
     private val _stats = MutableStateFlow(LinkStats())
     private val _linkError = MutableStateFlow<LinkException?>(null)
     @Volatile private var fromSystemZero = 0L
@@ -182,7 +184,8 @@ public class GroundStation private constructor(
     }
 
     private fun encode(message: Any): ByteArray {
-        val bytes = encoder.encode(message, config.systemId, config.componentId, sequences.next(config.systemId, config.componentId), config.mavlinkVersion)
+        val encoded = encoder.encode(message, config.systemId, config.componentId, sequences.next(config.systemId, config.componentId), config.mavlinkVersion)
+        val bytes = if (signing == null) encoded else signing.sign(encoded)
         if (taps.active) taps.onFrame(FrameDirection.SENT, bytes)
         return bytes
     }
@@ -228,6 +231,7 @@ public class GroundStation private constructor(
     private fun onBytes(peer: LinkPeer, bytes: ByteArray) {
         val decoder = decoders.decoderFor(peer)
         decoder.feed(bytes) { frame ->
+            if (signing != null && !signing.admit(frame)) return@feed // refused: counted, never recorded or routed
             if (taps.active) taps.onFrame(FrameDirection.RECEIVED, encoder.wireBytes(frame))
             if (forwarding.active) forwarding.onFrame(peer, frame)
             try {
@@ -254,6 +258,7 @@ public class GroundStation private constructor(
     private fun publishStats() {
         val t = decoders.totals()
         _stats.value = LinkStats(t.frames, t.badCrc, t.skippedBytes, t.unknownMessages, registry.unroutedFrames, handlerErrors, t.evictions, trackingErrors, fromSystemZero, taps.errors)
+            .let { if (signing == null) it else signing.countInto(it) }
     }
 
     private fun gcsHeartbeat(): Heartbeat = Heartbeat.builder()

@@ -2,6 +2,7 @@ package pod.mavlink
 
 import kotlin.time.Duration
 import pod.core.time.Timebase
+import pod.mavlink.signing.LinkSigning
 import kotlin.time.TimeSource
 import kotlin.time.Duration.Companion.seconds
 
@@ -63,6 +64,8 @@ public data class GroundStationConfig(
      * every vehicle found, fixed when it is found.
      */
     public val vehicleTiming: VehicleTiming = VehicleTiming(),
+    /** MAVLink 2 signing on this link ([LinkSigning]); null (the default): frames unsigned, nothing verified. */
+    public val signing: LinkSigning? = null,
 ) {
     init {
         require(systemId in 1..255) { "systemId must be in 1..255, was $systemId" }
@@ -72,6 +75,7 @@ public data class GroundStationConfig(
         require(mavlinkVersion == 1 || mavlinkVersion == 2) { "mavlinkVersion must be 1 or 2, was $mavlinkVersion" }
         require(streamRequestInterval.isPositive()) { "streamRequestInterval must be > 0, was $streamRequestInterval" }
         require(streamRequestRounds >= 1) { "streamRequestRounds must be ≥ 1, was $streamRequestRounds" }
+        require(signing == null || mavlinkVersion == 2) { "signing needs mavlinkVersion 2: MAVLink 1 frames cannot be signed" }
         require(maxPeers >= 1) { "maxPeers must be ≥ 1, was $maxPeers" }
         require(silenceCheckEvery == null || silenceCheckEvery.isPositive()) { "silenceCheckEvery must be > 0, was $silenceCheckEvery" }
         streamRates.forEach { (id, hz) -> require(hz > 0 && hz <= 1000) { "stream rate for message $id must be in (0, 1000] Hz, was $hz" } }

@@ -22,4 +22,12 @@ public data class LinkStats(
     public val fromSystemZero: Long = 0,
     /** Frames a recording tap failed on (a tlog that could not be written); see [GroundStation.record]. */
     public val recordingErrors: Long = 0,
+    /** Signed frames whose signature did not verify (wrong key, altered bytes); refused ([GroundStationConfig.signing]). */
+    public val badSignatures: Long = 0,
+    /** Well-signed frames refused as replays: a timestamp not above its stream's last, or a new stream over a minute old. */
+    public val replayedFrames: Long = 0,
+    /** Unsigned frames a signed link refused (its policy did not allow them). */
+    public val unsignedRefused: Long = 0,
+    /** Unsigned frames a signed link let through by its policy (radio reports, or all when it accepts unsigned). */
+    public val unsignedAccepted: Long = 0,
 )

@@ -7,6 +7,9 @@ import io.dronefleet.mavlink.common.ParamRequestList
 import io.dronefleet.mavlink.common.ParamRequestRead
 import io.dronefleet.mavlink.common.ParamSet
 import io.dronefleet.mavlink.common.SetMode
+import io.dronefleet.mavlink.common.SetupSigning
+import pod.core.vehicle.Severity
+import pod.sim.signing.ArduPilotSigning
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
@@ -72,6 +75,7 @@ public class SimVehicle(
     private val openLink: LinkOpener = LinkOpener.Udp,
 ) {
     private val encoder = VehicleEncoder(codec, config.systemId, config.componentId)
+    private val signing = ArduPilotSigning(config.signingKey, codec)
     private val bootedAt = timebase.clock.markNow()
     private val messages = SimMessages(config, bootedAt) { missionServer.list(MissionType.MISSION).size }
     private val _state: MutableStateFlow<SimState>
@@ -141,6 +145,9 @@ public class SimVehicle(
 
     /** The local UDP port the vehicle sends from, or null when stopped. */
     public val localPort: Int? get() = link?.localPort
+
+    /** Frames it dropped for a missing or bad signature or a stale timestamp, once it holds a signing key. */
+    public val refusedFrames: Long get() = signing.refused
 
     /** Whether the vehicle is running. */
     public val isRunning: Boolean get() = scope != null
@@ -223,7 +230,7 @@ public class SimVehicle(
         val inbox = Channel<Pair<MavFrame, Any>>(capacity = 1024, onBufferOverflow = BufferOverflow.DROP_OLDEST)
         launch { for ((frame, message) in inbox) handle(frame, message) }
         link.receive { _, bytes ->
-            decoder.feed(bytes) { frame -> codec.decode(frame)?.let { inbox.trySend(frame to it) } }
+            decoder.feed(bytes) { frame -> if (signing.admits(frame)) codec.decode(frame)?.let { inbox.trySend(frame to it) } }
         }
         inbox.close()
     }
@@ -261,6 +268,9 @@ public class SimVehicle(
             is ParamRequestRead -> if (addressedToUs(message.targetSystem(), message.targetComponent())) {
                 autopilot.paramResponder.read(message.paramId(), message.paramIndex())
             }
+            is SetupSigning -> if (addressedToUs(message.targetSystem(), message.targetComponent())) {
+                signing.setup(message, autopilot.state().armed)?.let { autopilot.emit(SimOutput.Text(Severity.WARNING, it)) }
+            }
             is ParamRequestList -> if (addressedToUs(message.targetSystem(), message.targetComponent())) autopilot.paramResponder.list()
             is ParamSet -> if (addressedToUs(message.targetSystem(), message.targetComponent())) {
                 autopilot.paramResponder.set(message.paramId(), message.paramValue())
@@ -291,7 +301,7 @@ public class SimVehicle(
 
     private suspend fun send(message: Any) {
         val link = link ?: return
-        link.sendToAll(encoder.encode(message))
+        link.sendToAll(signing.sign(encoder.encode(message)))
     }
 
     internal companion object {

@@ -4,6 +4,7 @@ import pod.core.units.Location
 import pod.core.units.m
 import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleType
+import pod.mavlink.signing.SigningKey
 import pod.sim.autopilot.profile.AutopilotProfile
 import pod.sim.autopilot.profile.Px4Profile
 import pod.sim.world.CameraFov
@@ -101,6 +102,13 @@ public data class SimVehicleConfig(
     public val objects: List<SimObject> = emptyList(),
     /** The camera's field of view, which with the height above the terrain sets a photo's footprint. */
     public val cameraFov: CameraFov = CameraFov.DEFAULT,
+    /**
+     * The MAVLink 2 signing key it boots with, as if set by SETUP_SIGNING earlier; null (the
+     * default): unsigned until a ground station sends SETUP_SIGNING. Keyed, it signs what it sends
+     * and ignores unsigned or forged frames but RADIO_STATUS and RADIO, as ArduPilot does
+     * ([pod.sim.signing.ArduPilotSigning]).
+     */
+    public val signingKey: SigningKey? = null,
 ) {
     init {
         require(systemId in 1..254) { "systemId must be in 1..254, was $systemId" }

@@ -1,5 +1,6 @@
 package pod.mavlink.signing
 
+import pod.mavlink.codec.Crc
 import pod.mavlink.codec.FrameLayout
 import java.security.MessageDigest
 
@@ -30,6 +31,27 @@ public object FrameSignature {
         digest(key, frame).copyInto(frame, frame.size - LENGTH, 0, LENGTH)
         return frame
     }
+
+    /**
+     * [unsigned] (a whole MAVLink 2 frame without a signature, as an encoder writes it) as a new
+     * signed frame: the signed flag set, the CRC recomputed over that header with [crcExtra] (the
+     * message's CRC_EXTRA), the 13-byte block appended and [sign]ed. The caller's array is untouched.
+     */
+    public fun signUnsigned(unsigned: ByteArray, crcExtra: Int, key: SigningKey, linkId: Int, timestamp: Long): ByteArray {
+        require(unsigned.size >= FrameLayout.HEADER_V2 + FrameLayout.CHECKSUM && unsigned[0] == FrameLayout.MAGIC_V2.toByte() &&
+            (unsigned[2].toInt() and FrameLayout.FLAG_SIGNED) == 0) { "not an unsigned MAVLink 2 frame" }
+        val checksumAt = unsigned.size - FrameLayout.CHECKSUM
+        val signed = unsigned.copyOf(unsigned.size + FrameLayout.SIGNATURE)
+        signed[2] = (signed[2].toInt() or FrameLayout.FLAG_SIGNED).toByte()
+        val crc = Crc.frameChecksum(signed, 1, checksumAt - 1, crcExtra)
+        signed[checksumAt] = crc.toByte()
+        signed[checksumAt + 1] = (crc ushr 8).toByte()
+        return sign(signed, key, linkId, timestamp)
+    }
+
+    /** The message id in a MAVLink 2 [frame]'s header. */
+    public fun messageId(frame: ByteArray): Int =
+        (frame[7].toInt() and 0xFF) or ((frame[8].toInt() and 0xFF) shl 8) or ((frame[9].toInt() and 0xFF) shl 16)
 
     /** Whether [frame]'s signature is the one [key] gives (constant time in the signature's bytes). */
     public fun verify(frame: ByteArray, key: SigningKey): Boolean {

@@ -16,6 +16,17 @@ public class SigningClock(private val epochMillis: () -> Long) {
         return last
     }
 
+    /**
+     * Raises the clock to [timestamp], a verified frame's: the next frame signed carries a later
+     * one. The MAVLink C library does this in `mavlink_signature_check` ("our next timestamp must
+     * be at least this timestamp") and pymavlink in `check_signature`, so a peer whose clock runs
+     * ahead never sees our frames as a stream more than a minute old.
+     */
+    @Synchronized
+    public fun observe(timestamp: Long) {
+        if (timestamp > last) last = timestamp
+    }
+
     /** The current signing time without using a timestamp (for [ReplayGuard.accept]'s `now`). */
     @Synchronized
     public fun now(): Long = maxOf(fromEpochMillis(epochMillis()), last)
