@@ -18,6 +18,7 @@ import pod.core.vehicle.VehicleType
 import pod.mavlink.link.LinkAddress
 import pod.sim.SimFleet
 import pod.sim.SimVehicleConfig
+import pod.sim.radio.SikRadio
 
 /** `pod sim`: simulated vehicles sending to a ground station, until interrupted. */
 internal class SimCommand(private val out: Output) : CliktCommand(name = "sim") {
@@ -35,6 +36,8 @@ internal class SimCommand(private val out: Output) : CliktCommand(name = "sim") 
         .double().restrictTo(0.01..1000.0).default(1.0)
     private val sysid by option("--sysid", help = "system id of the first vehicle").int().restrictTo(1..254).default(1)
     private val json by option("--json", help = "JSON lines instead of text").flag()
+    private val radio by option("--radio", metavar = "BAUD", help = "emulate a SiK radio pair at BAUD (e.g. 57600) between each vehicle and the ground")
+        .int().restrictTo(1_200..2_000_000)
 
     override fun help(context: Context): String = "Run simulated MAVLink vehicles until interrupted."
 
@@ -47,7 +50,7 @@ internal class SimCommand(private val out: Output) : CliktCommand(name = "sim") 
         val fleet = reportingLinkErrors {
             SimFleet.start(
                 vehicles, this,
-                SimVehicleConfig(systemId = sysid, type = type, autopilot = autopilot, gcs = target, timeScale = speedup),
+                SimVehicleConfig(systemId = sysid, type = type, autopilot = autopilot, gcs = target, timeScale = speedup, radio = radio?.let { SikRadio(baud = it) }),
             )
         }
         for (v in fleet.vehicles) {

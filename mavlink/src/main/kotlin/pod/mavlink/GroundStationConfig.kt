@@ -2,6 +2,7 @@ package pod.mavlink
 
 import kotlin.time.Duration
 import pod.core.time.Timebase
+import pod.mavlink.radio.RadioPacing
 import kotlin.time.TimeSource
 import kotlin.time.Duration.Companion.seconds
 
@@ -63,6 +64,8 @@ public data class GroundStationConfig(
      * every vehicle found, fixed when it is found.
      */
     public val vehicleTiming: VehicleTiming = VehicleTiming(),
+    /** How sends are paced once a telemetry radio reports RADIO_STATUS; [RadioPacing.Off] never paces. */
+    public val radioPacing: RadioPacing = RadioPacing(),
 ) {
     init {
         require(systemId in 1..255) { "systemId must be in 1..255, was $systemId" }

@@ -6,6 +6,7 @@ import pod.core.vehicle.Autopilot
 import pod.core.vehicle.VehicleType
 import pod.sim.autopilot.profile.AutopilotProfile
 import pod.sim.autopilot.profile.Px4Profile
+import pod.sim.radio.SikRadio
 import pod.sim.world.CameraFov
 import pod.sim.world.Rangefinder
 import pod.sim.world.SimObject
@@ -101,6 +102,11 @@ public data class SimVehicleConfig(
     public val objects: List<SimObject> = emptyList(),
     /** The camera's field of view, which with the height above the terrain sets a photo's footprint. */
     public val cameraFov: CameraFov = CameraFov.DEFAULT,
+    /**
+     * A SiK radio pair between the vehicle and its ground station, emulated at its serial rate with
+     * bounded buffers ([pod.sim.radio.RadioLink]); null (the default) is a direct link.
+     */
+    public val radio: SikRadio? = null,
 ) {
     init {
         require(systemId in 1..254) { "systemId must be in 1..254, was $systemId" }
