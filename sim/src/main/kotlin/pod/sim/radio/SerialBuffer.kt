@@ -4,6 +4,7 @@ import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.delay
 import pod.mavlink.link.LinkPeer
 import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
 
@@ -48,14 +49,21 @@ internal class SerialBuffer(private val capacity: Int, private val bytesPerSecon
         var lineFreeAt = Duration.ZERO
         for ((peer, chunk) in chunks) {
             val now = started.elapsedNow()
-            val done = maxOf(now, lineFreeAt) + (chunk.size / bytesPerSecond).seconds
+            // A chunk taken just after the line came free (a late wake-up: timers round to the
+            // millisecond) follows on from the last one, so the rate does not drift below the baud.
+            val start = if (now - lineFreeAt < BACK_TO_BACK) lineFreeAt else now
+            val done = start + (chunk.size / bytesPerSecond).seconds
             lineFreeAt = done
-            delay(done - now)
+            if (done > now) delay(done - now)
             synchronized(this) {
                 queued -= chunk.size
                 carried += chunk.size
             }
             deliver(peer, chunk)
         }
+    }
+
+    private companion object {
+        val BACK_TO_BACK = 2.milliseconds
     }
 }
