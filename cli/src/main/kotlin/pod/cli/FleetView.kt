@@ -14,6 +14,7 @@ import pod.core.units.toReadable
 import pod.core.vehicle.ConnectionState
 import pod.mavlink.FleetEvent
 import pod.mavlink.MavlinkVehicle
+import pod.mavlink.radio.RadioStatus
 import java.util.Locale
 
 /** One vehicle as the fleet table shows it: a snapshot of its identity and telemetry. */
@@ -134,6 +135,17 @@ internal object FleetView {
         value < fair -> TextColors.yellow
         else -> TextColors.green
     }
+
+    /**
+     * The link's radio for people, under the table: `radio 51/68: rssi 180/175 noise 40/38 txbuf 98%
+     * rxerrors 0 fixed 0` (local/remote). MAVProxy's console marks a radio red when a signal is
+     * within 10 of its noise (mavproxy_console.py, handle_radio_status); so does the live view.
+     */
+    fun radioLine(r: RadioStatus): String =
+        "radio ${r.systemId}/${r.componentId}: rssi ${r.rssi}/${r.remrssi} noise ${r.noise}/${r.remnoise} txbuf ${r.txbuf}% rxerrors ${r.rxerrors} fixed ${r.fixed}"
+
+    /** Red when either radio hears its signal within 10 of its noise, as MAVProxy shows it. */
+    fun radioStyle(r: RadioStatus): TextStyle = if (r.rssi < r.noise + 10 || r.remrssi < r.remnoise + 10) TextColors.red else TextColors.green
 
     fun eventLine(event: FleetEvent): String {
         val id = event.vehicle.identity.value

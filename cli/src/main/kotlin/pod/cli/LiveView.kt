@@ -11,7 +11,9 @@ import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.onSubscription
 import kotlinx.coroutines.launch
 import pod.cli.json.EventJson
+import pod.cli.json.radioEvent
 import pod.cli.json.telemetryEvent
+import pod.mavlink.radio.RadioStatus
 import pod.cli.json.toEvent
 import pod.mavlink.FleetEvent
 import pod.mavlink.GroundStation
@@ -35,6 +37,7 @@ internal class LiveView(
     private val animation: Animation<Widget>? = out.liveTerminal?.takeIf { !json }?.animation { it }
     private val recent = ArrayDeque<Pair<String, TextStyle?>>()
     private var rows: List<VehicleRow> = emptyList()
+    private var radio: RadioStatus? = null
 
     suspend fun show(gcs: GroundStation): Nothing = coroutineScope {
         val announced = HashSet<Int>()
@@ -55,18 +58,26 @@ internal class LiveView(
 
     fun render(gcs: GroundStation) {
         val vehicles = gcs.vehicles.value.values.sortedBy { it.systemId }
-        if (json) vehicles.forEach { out.line(EventJson.encode(telemetryEvent(it))) } else draw(vehicles.map(FleetView::row))
+        val radio = gcs.radio.value
+        if (json) {
+            vehicles.forEach { out.line(EventJson.encode(telemetryEvent(it))) }
+            radio?.let { out.line(EventJson.encode(radioEvent(it))) }
+        } else {
+            draw(vehicles.map(FleetView::row), radio)
+        }
     }
 
     /** Shows the table of [rows]: redrawn in place at a terminal, printed as plain lines elsewhere. */
     @Synchronized
-    fun draw(rows: List<VehicleRow>) {
+    fun draw(rows: List<VehicleRow>, radio: RadioStatus? = null) {
         this.rows = rows
+        this.radio = radio
         val live = animation
         if (live != null) {
             live.update(frame())
         } else {
             FleetView.plainLines(FleetView.table(rows)).forEach(out::line)
+            radio?.let { out.line(FleetView.radioLine(it)) }
             out.line("")
         }
     }
@@ -100,6 +111,7 @@ internal class LiveView(
 
     private fun frame(): Widget = verticalLayout {
         cell(FleetView.table(rows))
+        radio?.let { cell(Text(FleetView.radioStyle(it)(FleetView.radioLine(it)))) }
         cell("")
         recent.forEach { (text, style) -> cell(Text(style?.invoke(text) ?: text)) }
     }

@@ -21,6 +21,7 @@ import pod.sim.FanOutOpener
 import pod.sim.LinkOpener
 import pod.sim.SimFleet
 import pod.sim.SimVehicleConfig
+import pod.sim.radio.SikRadio
 
 private const val DEFAULT_OUT = "udpout:127.0.0.1:14550"
 
@@ -43,6 +44,8 @@ internal class SimCommand(private val out: Output) : CliktCommand(name = "sim") 
     private val sysid by option("--sysid", help = "system id of the first vehicle").int().restrictTo(1..254).default(1)
     private val json by option("--json", help = "JSON lines instead of text").flag()
     private val keyFile by keyFileOption()
+    private val radio by option("--radio", metavar = "BAUD", help = "emulate a SiK radio pair at BAUD (e.g. 57600) between each vehicle and the ground")
+        .int().restrictTo(1_200..2_000_000)
 
     override fun help(context: Context): String = "Run simulated MAVLink vehicles until interrupted."
 
@@ -58,7 +61,10 @@ internal class SimCommand(private val out: Output) : CliktCommand(name = "sim") 
         val fleet = reportingLinkErrors {
             SimFleet.start(
                 vehicles, this,
-                SimVehicleConfig(systemId = sysid, type = type, autopilot = autopilot, gcs = target, timeScale = speedup, signingKey = signingKey(keyFile)),
+                SimVehicleConfig(
+                    systemId = sysid, type = type, autopilot = autopilot, gcs = target, timeScale = speedup,
+                    signingKey = signingKey(keyFile), radio = radio?.let { SikRadio(baud = it) },
+                ),
                 openLink = if (addresses.size > 1) FanOutOpener(addresses) else LinkOpener.Udp,
             )
         }

@@ -6,6 +6,7 @@ import io.kotest.matchers.ints.shouldBeGreaterThan
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import io.kotest.matchers.string.shouldNotContain
+import pod.mavlink.radio.RadioStatus
 
 class LiveViewTest : StringSpec({
 
@@ -20,6 +21,20 @@ class LiveViewTest : StringSpec({
         out.lines.first() shouldBe "listening on /127.0.0.1:14550 (local port 14550)"
         out.lines.filter { "SYSID" in it }.size shouldBe 2
         out.lines.map { it.trim().substringBefore(' ') } shouldContainInOrder listOf("SYSID", "1", "2", "", "LOST", "SYSID", "1", "2", "3", "")
+    }
+
+    "a radio's report shows under the table as one line, local/remote, and only once a radio has reported" {
+        val out = RecordedLines()
+        val view = LiveView(out, json = false)
+        view.draw(FLEET)
+        out.lines.none { it.startsWith("radio") } shouldBe true
+        view.draw(FLEET, RadioStatus(51, 68, rssi = 180, remrssi = 175, txbuf = 97, noise = 40, remnoise = 38, rxerrors = 3, fixed = 1))
+        out.lines.filter { it.startsWith("radio") } shouldBe listOf("radio 51/68: rssi 180/175 noise 40/38 txbuf 97% rxerrors 3 fixed 1")
+    }
+
+    "a radio whose signal is within 10 of its noise is shown red, as MAVProxy shows it" {
+        FleetView.radioStyle(RadioStatus(51, 68, rssi = 45, remrssi = 175, txbuf = 97, noise = 40, remnoise = 38, rxerrors = 0, fixed = 0)) shouldBe com.github.ajalt.mordant.rendering.TextColors.red
+        FleetView.radioStyle(RadioStatus(51, 68, rssi = 180, remrssi = 175, txbuf = 97, noise = 40, remnoise = 38, rxerrors = 0, fixed = 0)) shouldBe com.github.ajalt.mordant.rendering.TextColors.green
     }
 
     "with --json the view says nothing for people" {

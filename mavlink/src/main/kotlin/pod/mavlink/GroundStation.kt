@@ -25,6 +25,8 @@ import pod.mavlink.link.LinkException
 import pod.mavlink.link.LinkPeer
 import pod.mavlink.link.MavlinkLink
 import pod.mavlink.signing.SignedFrames
+import pod.mavlink.radio.RadioPacer
+import pod.mavlink.radio.RadioStatus
 import pod.mavlink.tlog.FrameDirection
 import pod.mavlink.tlog.FrameTap
 import pod.mavlink.tlog.FrameTaps
@@ -70,6 +72,7 @@ public class GroundStation private constructor(
     @Volatile private var trackingErrors = 0L
     private val taps = FrameTaps(config.clock)
     private val forwarding = pod.mavlink.route.StationForwarding(link, codec)
+    private val pacer = RadioPacer(config.radioPacing, config.clock)
     private val registry = VehicleRegistry(this, config.lostAfter, StreamRequests(scope, config, ::linkBroken)) { guarded(it) }
 
     /** Vehicles heard so far by system id, lost ones included (see [MavlinkVehicle.connection]). */
@@ -80,6 +83,9 @@ public class GroundStation private constructor(
 
     /** What the receive path has counted, refreshed about four times a second. */
     public val stats: StateFlow<LinkStats> = _stats.asStateFlow()
+
+    /** The latest RADIO_STATUS a telemetry radio injected, with its source ids; null until one is heard. Sends are paced from it (see [GroundStationConfig.radioPacing]). */
+    public val radio: StateFlow<RadioStatus?> = pacer.status
 
     /** Set when the link broke (a TCP server hung up); the station then hears nothing more. */
     public val linkError: StateFlow<LinkException?> = _linkError.asStateFlow()
@@ -125,6 +131,7 @@ public class GroundStation private constructor(
     /** Sends [message] to [vehicle] (to the address it was heard from, when listening). */
     public suspend fun sendTo(vehicle: MavlinkVehicle, message: Any) {
         val bytes = encode(message)
+        if (pacer.active) pacer.pace(bytes.size)
         val peer = vehicle.peer
         if (peer != null) link.send(bytes, peer) else link.sendToAll(bytes)
     }
@@ -136,7 +143,7 @@ public class GroundStation private constructor(
      */
     internal fun sendNow(vehicle: MavlinkVehicle, message: Any): Boolean {
         val peer = vehicle.peer
-        if (!link.sendsInPlace || peer == null) return false
+        if (!link.sendsInPlace || peer == null || pacer.active) return false
         link.sendNow(encode(message), peer)
         return true
     }
@@ -153,7 +160,9 @@ public class GroundStation private constructor(
 
     /** Sends [message] to every peer of the link. */
     public suspend fun broadcast(message: Any) {
-        link.sendToAll(encode(message))
+        val bytes = encode(message)
+        if (pacer.active) pacer.pace(bytes.size)
+        link.sendToAll(bytes)
     }
 
     /**
@@ -252,7 +261,9 @@ public class GroundStation private constructor(
             fromSystemZero++
             return
         }
-        registry.onMessage(peer, frame, codec.decode(frame))
+        val message = codec.decode(frame)
+        if (frame.messageId == RadioStatus.MESSAGE_ID) RadioStatus.of(frame, message)?.let(pacer::onReport)
+        registry.onMessage(peer, frame, message)
     }
 
     private fun publishStats() {

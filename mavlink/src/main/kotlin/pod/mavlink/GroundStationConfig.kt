@@ -3,6 +3,7 @@ package pod.mavlink
 import kotlin.time.Duration
 import pod.core.time.Timebase
 import pod.mavlink.signing.LinkSigning
+import pod.mavlink.radio.RadioPacing
 import kotlin.time.TimeSource
 import kotlin.time.Duration.Companion.seconds
 
@@ -66,6 +67,8 @@ public data class GroundStationConfig(
     public val vehicleTiming: VehicleTiming = VehicleTiming(),
     /** MAVLink 2 signing on this link ([LinkSigning]); null (the default): frames unsigned, nothing verified. */
     public val signing: LinkSigning? = null,
+    /** How sends are paced once a telemetry radio reports RADIO_STATUS; [RadioPacing.Off] never paces. */
+    public val radioPacing: RadioPacing = RadioPacing(),
 ) {
     init {
         require(systemId in 1..255) { "systemId must be in 1..255, was $systemId" }

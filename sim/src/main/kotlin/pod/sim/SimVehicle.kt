@@ -50,6 +50,7 @@ import pod.mavlink.vehicle.serve
 import pod.sim.autopilot.CommandRequest
 import pod.sim.autopilot.SimAutopilot
 import pod.sim.autopilot.SimOutput
+import pod.sim.radio.RadioLink
 import pod.sim.world.SimWorld
 
 /**
@@ -143,6 +144,9 @@ public class SimVehicle(
     /** Message id → rate in Hz of what it streams now, as configured or as a ground station asked. */
     public val streamRates: StateFlow<Map<Int, Double>> = streams.rates
 
+    /** The emulated radio pair its link runs through ([SimVehicleConfig.radio]) while running, or null. */
+    public val radioLink: RadioLink? get() = link as? RadioLink
+
     /** The local UDP port the vehicle sends from, or null when stopped. */
     public val localPort: Int? get() = link?.localPort
 
@@ -159,7 +163,7 @@ public class SimVehicle(
     @OptIn(ExperimentalCoroutinesApi::class)
     public suspend fun start(parent: CoroutineScope) {
         check(scope == null) { "vehicle ${config.systemId} is already running" }
-        val link = openLink.open(LinkAddress.parse(config.gcs))
+        val link = openLink.open(LinkAddress.parse(config.gcs)).let { l -> config.radio?.let { RadioLink(l, it, timebase) } ?: l }
         val scope = CoroutineScope(
             parent.coroutineContext + SupervisorJob(parent.coroutineContext.job) +
                 timebase.dispatcher.limitedParallelism(1) + CoroutineName("sim-${config.systemId}"),

@@ -7,6 +7,7 @@ import pod.core.vehicle.VehicleType
 import pod.mavlink.signing.SigningKey
 import pod.sim.autopilot.profile.AutopilotProfile
 import pod.sim.autopilot.profile.Px4Profile
+import pod.sim.radio.SikRadio
 import pod.sim.world.CameraFov
 import pod.sim.world.Rangefinder
 import pod.sim.world.SimObject
@@ -109,6 +110,11 @@ public data class SimVehicleConfig(
      * ([pod.sim.signing.ArduPilotSigning]).
      */
     public val signingKey: SigningKey? = null,
+    /**
+     * A SiK radio pair between the vehicle and its ground station, emulated at its serial rate with
+     * bounded buffers ([pod.sim.radio.RadioLink]); null (the default) is a direct link.
+     */
+    public val radio: SikRadio? = null,
 ) {
     init {
         require(systemId in 1..254) { "systemId must be in 1..254, was $systemId" }

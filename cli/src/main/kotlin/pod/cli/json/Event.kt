@@ -68,6 +68,26 @@ public sealed interface Event {
         @SerialName("lost_frames") val lostFrames: Long,
     ) : Event
 
+    /**
+     * The latest RADIO_STATUS a telemetry radio on the link injected (a SiK radio reports as
+     * sysid 51, compid 68), once per period while one has been heard: its signal strengths and
+     * noise in the radio's own units (0..254, 255 unknown; remote: the other radio's), [txbuf] the
+     * free part of its transmit buffer in percent, [rxerrors] and [fixed] its air packets received
+     * with errors and repaired since it booted.
+     */
+    @Serializable @SerialName("radio")
+    public data class Radio(
+        val sysid: Int,
+        val compid: Int,
+        val rssi: Int,
+        val remrssi: Int,
+        val noise: Int,
+        val remnoise: Int,
+        val txbuf: Int,
+        val rxerrors: Int,
+        val fixed: Int,
+    ) : Event
+
     // ---- pod replay ----
 
     /** `pod replay` started playing [file] at [speed] times the recorded pace. */

@@ -5,6 +5,7 @@ import pod.core.platform.MissionEvent
 import pod.core.vehicle.ConnectionState
 import pod.mavlink.FleetEvent
 import pod.mavlink.MavlinkVehicle
+import pod.mavlink.radio.RadioStatus
 import pod.cli.queue.toJson
 
 // Pod's own objects as the events `--json` prints: the model stays free of them, and each
@@ -23,6 +24,9 @@ internal fun FleetEvent.toEvent(): Event {
 }
 
 /** The `telemetry` event: what [vehicle] last reported. */
+/** A radio's report as `pod watch --json` prints it. */
+internal fun radioEvent(r: RadioStatus): Event.Radio = Event.Radio(r.systemId, r.componentId, r.rssi, r.remrssi, r.noise, r.remnoise, r.txbuf, r.rxerrors, r.fixed)
+
 internal fun telemetryEvent(vehicle: MavlinkVehicle): Event.Telemetry {
     val t = vehicle.telemetry
     val pos = t.position.value

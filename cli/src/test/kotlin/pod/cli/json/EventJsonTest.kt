@@ -29,6 +29,7 @@ private val samples: List<Event> = listOf(
     Event.Found(42, 1, "QUADROTOR", "ARDUPILOT"),
     Event.Lost(42, 1, "QUADROTOR", "ARDUPILOT", silenceMs = 3012),
     Event.Regained(42, 1, "QUADROTOR", "ARDUPILOT"),
+    Event.Radio(51, 68, rssi = 180, remrssi = 175, noise = 40, remnoise = 38, txbuf = 97, rxerrors = 3, fixed = 1),
     Event.Telemetry(
         sysid = 42, connected = true, lat = 41.1234567, lon = -8.54321, altMsl = 95.5, altRel = 12.3, heading = 90.0,
         battery = 0.87, voltage = 12.4, mode = "AUTO", armed = true, landed = "IN_AIR", gpsFix = "FIX_3D", satellites = 10,
