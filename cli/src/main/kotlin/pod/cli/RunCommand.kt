@@ -36,6 +36,7 @@ import java.nio.channels.UnresolvedAddressException
 internal class RunCommand : CliktCommand(name = "run") {
     private val script by argument("SCRIPT", help = "a .main.kts script")
     private val scriptArgs by argument("ARGS", help = "passed to the script as args (put them after --)").multiple()
+    private val keyFile by keyFileOption()
     private val sim by option("--sim", metavar = "N", help = "fly N simulated vehicles (default: 4)").int().restrictTo(1..254)
     private val connect by option("--connect", metavar = "ADDR", help = "fly the vehicles on this link (udpin://0.0.0.0:14550, serial:///dev/ttyUSB0:57600, …)")
     private val timeScale by option("--time-scale", metavar = "X", help = "vehicle seconds per real second (default: 1): the simulated fleet's with --sim; with --connect, that of a simulator run faster (pod sim --time-scale X), so the program's durations count in vehicle time")
@@ -93,7 +94,8 @@ internal class RunCommand : CliktCommand(name = "run") {
                 // Only listening is tried: it takes nothing from anyone, where a TCP connect would.
                 if (parsed is LinkAddress.UdpIn && parsed.port != 0) tryListening(parsed)
                 if (parsed is LinkAddress.Serial && parsed.path.startsWith("/") && !java.io.File(parsed.path).exists()) badInput(DeviceNotFound(parsed).message!!)
-                FleetChoice.Connect(address, timeScale ?: 1.0)
+                signingKey(keyFile) // a malformed key is bad input (exit 2), found before the script compiles
+                FleetChoice.Connect(address, timeScale ?: 1.0, keyFile?.toString())
             }
             else -> FleetChoice.Sim(sim ?: 4, timeScale ?: 1.0)
         }

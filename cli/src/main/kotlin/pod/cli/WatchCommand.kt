@@ -31,6 +31,7 @@ internal class WatchCommand(private val out: Output) : CliktCommand(name = "watc
         .convert { it.toDurationOrNull() ?: fail(NOT_A_DURATION.format(it)) }
     private val lostAfter by option("--lost-after", help = "silence after which a vehicle is marked lost ($DURATION_FORMAT)")
         .convert { it.toDurationOrNull() ?: fail(NOT_A_DURATION.format(it)) }.default(3.seconds)
+    private val keyFile by keyFileOption()
     private val record by option("--record", help = "write every frame sent and received to this tlog (MAVProxy's and pymavlink's format)")
         .path()
 
@@ -38,7 +39,7 @@ internal class WatchCommand(private val out: Output) : CliktCommand(name = "watc
 
     override fun run() = runBlocking {
         val gcs = reportingLinkErrors {
-            GroundStation.open(connect, this, GroundStationConfig(lostAfter = lostAfter))
+            GroundStation.open(connect, this, signedConfig(signingKey(keyFile), GroundStationConfig(lostAfter = lostAfter)))
         }
         // Opened after the link, so a bad address leaves no empty file behind.
         val writer = record?.let { path ->

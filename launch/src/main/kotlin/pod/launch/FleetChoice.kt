@@ -13,6 +13,7 @@ package pod.launch
  * |---|---|---|
  * | `pod.fleet` | `sim:N` (1..254 vehicles) or `connect:ADDRESS` (a connection string as `pod watch` takes) | `sim:4` |
  * | `pod.timeScale` | vehicle seconds per real second, 0.01..1000: the simulated fleet's, or that of an external simulator run faster than real time (`pod sim --time-scale X`) | `1` |
+ * | `pod.keyFile` | with `connect:`, the MAVLink 2 signing key's file ([pod.mavlink.signing.SigningKeys.fromFile]) | the key in `$POD_SIGNING_KEY`, else unsigned |
  */
 public sealed interface FleetChoice {
     /** The same choice as system properties, as `pod run` sets them. */
@@ -43,6 +44,8 @@ public sealed interface FleetChoice {
         public val address: String,
         /** Vehicle seconds per real second, 0.01..1000: the program's durations count in vehicle time. */
         public val timeScale: Double = 1.0,
+        /** The signing key's file; null: the key in `$POD_SIGNING_KEY`, or an unsigned link when that is unset. */
+        public val keyFile: String? = null,
     ) : FleetChoice {
         init {
             require(address.isNotBlank()) { "address must not be blank" }
@@ -50,7 +53,8 @@ public sealed interface FleetChoice {
         }
 
         override fun toSystemProperties(): Map<String, String> =
-            mapOf(FLEET_PROPERTY to "connect:$address") + (if (timeScale == 1.0) emptyMap() else mapOf(TIME_SCALE_PROPERTY to timeScale.toString()))
+            mapOf(FLEET_PROPERTY to "connect:$address") + (if (timeScale == 1.0) emptyMap() else mapOf(TIME_SCALE_PROPERTY to timeScale.toString())) +
+                (if (keyFile == null) emptyMap() else mapOf(KEY_FILE_PROPERTY to keyFile))
     }
 
     public companion object {
@@ -60,6 +64,9 @@ public sealed interface FleetChoice {
         /** Vehicle seconds per real second, for `sim:N` and `connect:ADDRESS` alike. */
         public const val TIME_SCALE_PROPERTY: String = "pod.timeScale"
 
+        /** The signing key's file, for `connect:ADDRESS`. */
+        public const val KEY_FILE_PROPERTY: String = "pod.keyFile"
+
         /** What a program gets when nothing chose a fleet. */
         public val DEFAULT: FleetChoice = Sim(4)
 
@@ -68,13 +75,13 @@ public sealed interface FleetChoice {
          * @throws IllegalArgumentException naming the property when a value is malformed.
          */
         public fun fromSystemProperties(): FleetChoice =
-            parse(System.getProperty(FLEET_PROPERTY), System.getProperty(TIME_SCALE_PROPERTY))
+            parse(System.getProperty(FLEET_PROPERTY), System.getProperty(TIME_SCALE_PROPERTY), System.getProperty(KEY_FILE_PROPERTY))
 
         /**
-         * The choice that property values [fleet] and [timeScale] describe (null: not set).
+         * The choice that property values [fleet], [timeScale] and [keyFile] describe (null: not set).
          * @throws IllegalArgumentException naming the property when a value is malformed.
          */
-        public fun parse(fleet: String?, timeScale: String?): FleetChoice {
+        public fun parse(fleet: String?, timeScale: String?, keyFile: String? = null): FleetChoice {
             val scale = timeScale?.let {
                 it.trim().toDoubleOrNull()?.takeIf { s -> s in 0.01..1000.0 }
                     ?: throw IllegalArgumentException("$TIME_SCALE_PROPERTY must be a number in 0.01..1000, was '$it'")
@@ -90,7 +97,7 @@ public sealed interface FleetChoice {
                 value.startsWith("connect:") -> {
                     val address = value.removePrefix("connect:")
                     require(address.isNotBlank()) { "$FLEET_PROPERTY=$value: the connection string is missing" }
-                    Connect(address, scale ?: 1.0)
+                    Connect(address, scale ?: 1.0, keyFile?.takeIf { it.isNotBlank() })
                 }
                 else -> throw IllegalArgumentException("$FLEET_PROPERTY must be sim:N or connect:ADDRESS, was '$value'")
             }

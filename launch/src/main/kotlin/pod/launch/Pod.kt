@@ -6,8 +6,12 @@ import pod.core.engine.Engine
 import pod.core.engine.EngineEvent
 import pod.core.engine.Program
 import pod.mavlink.GroundStation
+import pod.mavlink.GroundStationConfig
+import pod.mavlink.signing.LinkSigning
+import pod.mavlink.signing.SigningKeys
 import pod.mavlink.platform.MavlinkPlatform
 import pod.sim.SimFlavor
+import java.nio.file.Path
 
 /**
  * Runs [block] as a Dolphin program on the fleet `pod run` chose ([FleetChoice]: `--sim N` drones
@@ -41,7 +45,7 @@ public fun <T> pod(choice: FleetChoice = FleetChoice.fromSystemProperties(), pri
                     Interruption.cancellable { runLocating(program, block) }
                 }.first
                 is FleetChoice.Connect -> {
-                    val station = GroundStation.open(choice.address, this)
+                    val station = GroundStation.open(choice.address, this, signedStation(choice.keyFile))
                     try {
                         // Against a simulator run faster, the program's durations count in its time.
                         val platform = MavlinkPlatform(station, choice.timeScale)
@@ -96,3 +100,7 @@ private class SafeReport {
         }
     }
 }
+
+/** A station signed with the key in [keyFile] (else `$POD_SIGNING_KEY`), or unsigned when there is neither. */
+private fun signedStation(keyFile: String?): GroundStationConfig =
+    GroundStationConfig(signing = SigningKeys.resolve(keyFile?.let { Path.of(it) })?.let { LinkSigning(it) })

@@ -19,6 +19,7 @@ import kotlinx.coroutines.job
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withTimeoutOrNull
 import pod.mavlink.codec.FrameEncoder
+import pod.mavlink.codec.FrameLayout
 import pod.mavlink.codec.MavFrame
 import pod.mavlink.codec.MessageCodec
 import pod.mavlink.link.LinkException
@@ -130,8 +131,7 @@ public class GroundStation private constructor(
 
     /** Sends [message] to [vehicle] (to the address it was heard from, when listening). */
     public suspend fun sendTo(vehicle: MavlinkVehicle, message: Any) {
-        val bytes = encode(message)
-        if (pacer.active) pacer.pace(bytes.size)
+        val bytes = pacedEncode(message)
         val peer = vehicle.peer
         if (peer != null) link.send(bytes, peer) else link.sendToAll(bytes)
     }
@@ -160,8 +160,7 @@ public class GroundStation private constructor(
 
     /** Sends [message] to every peer of the link. */
     public suspend fun broadcast(message: Any) {
-        val bytes = encode(message)
-        if (pacer.active) pacer.pace(bytes.size)
+        val bytes = pacedEncode(message)
         link.sendToAll(bytes)
     }
 
@@ -192,8 +191,26 @@ public class GroundStation private constructor(
         withTimeoutOrNull(within) { link.awaitClosed() }
     }
 
-    private fun encode(message: Any): ByteArray {
-        val encoded = encoder.encode(message, config.systemId, config.componentId, sequences.next(config.systemId, config.componentId), config.mavlinkVersion)
+    private fun encode(message: Any): ByteArray = finish(encodeUnsigned(message))
+
+    /**
+     * [encode], waiting first for the radio's pacer when one is active. The frame is signed after
+     * the wait, not before: a signature's timestamp must grow from frame to frame on the link, and
+     * a frame signed before a wait could go out after one signed later by another sender, which
+     * the vehicle would then drop as a replay.
+     */
+    private suspend fun pacedEncode(message: Any): ByteArray {
+        if (!pacer.active) return encode(message)
+        val unsigned = encodeUnsigned(message)
+        pacer.pace(unsigned.size + if (signing == null) 0 else FrameLayout.SIGNATURE)
+        return finish(unsigned)
+    }
+
+    private fun encodeUnsigned(message: Any): ByteArray =
+        encoder.encode(message, config.systemId, config.componentId, sequences.next(config.systemId, config.componentId), config.mavlinkVersion)
+
+    /** Signs [encoded] when the link signs, and shows it to the taps. */
+    private fun finish(encoded: ByteArray): ByteArray {
         val bytes = if (signing == null) encoded else signing.sign(encoded)
         if (taps.active) taps.onFrame(FrameDirection.SENT, bytes)
         return bytes
