@@ -7,6 +7,7 @@ import io.dronefleet.mavlink.util.EnumValue
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.longs.shouldBeGreaterThan
 import io.kotest.matchers.ints.shouldBeInRange
+import io.kotest.matchers.ints.shouldBeLessThanOrEqual
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.shouldNotBe
 import kotlinx.coroutines.CoroutineStart
@@ -22,6 +23,8 @@ import pod.mavlink.MavlinkVehicle
 import pod.mavlink.mission.MissionType
 import pod.mavlink.radio.RadioPacing
 import pod.mavlink.radio.RadioStatus
+import pod.mavlink.tlog.FrameDirection
+import pod.mavlink.tlog.FrameTap
 import pod.sim.SimVehicle
 import pod.sim.SimVehicleConfig
 import pod.sim.radio.SikRadio
@@ -62,6 +65,23 @@ class RadioPacingSpec : StringSpec({
         }
     }
 
+    "paced, a 200-item upload sends each item once: its resend timer waits a radio's round trip, not loopback's" {
+        virtualRun(seed = 5) {
+            behindRadio(GroundStationConfig()) { gcs, vehicle, sim ->
+                withTimeout(5.seconds) { gcs.radio.filterNotNull().first() }
+                val sent = AtomicInteger()
+                val recording = gcs.record(
+                    FrameTap { _, direction, frame -> if (direction == FrameDirection.SENT && frame.messageId() == MISSION_ITEM_INT) sent.incrementAndGet() },
+                )
+                withTimeout(2.minutes) { vehicle.mission.upload(waypoints(200)) }
+                recording.stop()
+                // The vehicle asks for every item once; an item sent again is a resend fired early.
+                sent.get() shouldBeLessThanOrEqual 205
+                sim.radioLink!!.uplinkDropped shouldBe 0
+            }
+        }
+    }
+
     "unpaced, the same burst overflows the ground radio's buffer" {
         virtualRun(seed = 5) {
             behindRadio(GroundStationConfig(radioPacing = RadioPacing.Off)) { gcs, vehicle, sim ->
@@ -83,6 +103,10 @@ class RadioPacingSpec : StringSpec({
 })
 
 private const val SWEEP = 300
+private const val MISSION_ITEM_INT = 73
+
+/** A MAVLink 2 frame's message id (bytes 7..9, little-endian). */
+private fun ByteArray.messageId(): Int = (this[7].toInt() and 0xFF) or ((this[8].toInt() and 0xFF) shl 8) or ((this[9].toInt() and 0xFF) shl 16)
 private const val FIRST_SPEED = 500
 
 /**

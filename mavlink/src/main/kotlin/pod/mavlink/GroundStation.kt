@@ -126,6 +126,9 @@ public class GroundStation private constructor(
         _linkError.compareAndSet(null, e)
     }
 
+    /** The shortest resend timeout the link allows now: a paced radio's few frame times, else 0. */
+    internal val resendFloorNanos: Long get() = pacer.resendFloorNanos()
+
     /** How many source addresses have a frame decoder now (at most [GroundStationConfig.maxPeers]). */
     internal val peerCount: Int get() = decoders.size
 

@@ -107,7 +107,7 @@ public class MavlinkVehicle internal constructor(
     private val timing: VehicleTiming get() = station.config.vehicleTiming
 
     /** Round-trip estimates every protocol exchange with this vehicle starts from and refines. */
-    internal val roundTrips: RoundTrips = RoundTrips(timing)
+    internal val roundTrips: RoundTrips = RoundTrips(timing) { station.resendFloorNanos }
 
     /** Upload, download and clear its mission, fence and rally lists. */
     public val mission: MissionService = MissionService(this, timing.transfers)

@@ -52,14 +52,19 @@ public data class CommandTiming(
  * the smoothed round trip plus four deviations, within the [CommandTiming] bounds. Only answers to
  * a first send are sampled, since an answer after a resend cannot say which send it answers.
  */
-internal class CommandRoundTrip(private val timing: CommandTiming) {
+internal class CommandRoundTrip(
+    private val timing: CommandTiming,
+    /** A floor the link sets now, in nanoseconds, above [CommandTiming.minAttemptTimeout] (a paced radio's; 0: none). */
+    private val linkFloorNanos: () -> Long = { 0L },
+) {
     private var smoothed = -1.0
     private var deviation = 0.0
 
     val attemptTimeoutNanos: Long
         get() {
             val estimate = if (smoothed < 0) timing.initialAttemptTimeout.inWholeNanoseconds.toDouble() else smoothed + 4 * deviation
-            return estimate.toLong().coerceIn(timing.minAttemptTimeout.inWholeNanoseconds, timing.maxAttemptTimeout.inWholeNanoseconds)
+            val floor = maxOf(timing.minAttemptTimeout.inWholeNanoseconds, linkFloorNanos()).coerceAtMost(timing.maxAttemptTimeout.inWholeNanoseconds)
+            return estimate.toLong().coerceIn(floor, timing.maxAttemptTimeout.inWholeNanoseconds)
         }
 
     fun sample(nanos: Long) {

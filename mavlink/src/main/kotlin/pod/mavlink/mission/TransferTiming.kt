@@ -73,7 +73,11 @@ public data class TransferTiming(
  * One estimator serves every transfer of a vehicle, so a transfer starts from what the previous
  * one measured instead of [TransferTiming.initialTimeout].
  */
-internal class RoundTripEstimator(private val timing: TransferTiming) {
+internal class RoundTripEstimator(
+    private val timing: TransferTiming,
+    /** A floor the link sets now, in nanoseconds, above [TransferTiming.minTimeout] (a paced radio's; 0: none). */
+    private val linkFloorNanos: () -> Long = { 0L },
+) {
     private var smoothed = -1.0
     private var deviation = 0.0
     private var backoff = 1
@@ -83,7 +87,8 @@ internal class RoundTripEstimator(private val timing: TransferTiming) {
     val timeoutNanos: Long
         get() {
             val base = if (smoothed < 0) timing.initialTimeout.inWholeNanoseconds.toDouble() else smoothed + 4 * deviation
-            val clamped = base.coerceIn(timing.minTimeout.inWholeNanoseconds.toDouble(), timing.maxTimeout.inWholeNanoseconds.toDouble())
+            val floor = maxOf(timing.minTimeout.inWholeNanoseconds, linkFloorNanos()).coerceAtMost(timing.maxTimeout.inWholeNanoseconds)
+            val clamped = base.coerceIn(floor.toDouble(), timing.maxTimeout.inWholeNanoseconds.toDouble())
             return (clamped * backoff).toLong().coerceAtMost(timing.maxTimeout.inWholeNanoseconds)
         }
 

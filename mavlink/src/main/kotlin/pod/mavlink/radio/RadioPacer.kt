@@ -66,6 +66,16 @@ internal class RadioPacer(private val pacing: RadioPacing, clock: TimeSource) {
         if (waitNanos > 0) delay(waitNanos.nanoseconds)
     }
 
+    /**
+     * The shortest a protocol's resend timeout should be now: the time two of the longest frames
+     * take at the paced rate (0 while nothing is paced). Over a radio, an answer queued behind a
+     * telemetry frame or two comes tens of milliseconds late; a loopback-sized timeout (10 ms)
+     * then resends items that were never lost, and the resends queue ahead of the next answer: a
+     * 200-item upload through an emulated 57600-baud pair carried 2.8× the bytes it needed and took
+     * 2.3× pymavlink's time (BENCHMARKS.md, "Mission upload over a 57600-baud radio").
+     */
+    fun resendFloorNanos(): Long = if (!active) 0L else (FLOOR_FRAMES * MAX_FRAME_BYTES * NANOS_PER_SECOND / rate).toLong()
+
     private fun refill() {
         val now = nowNanos()
         tokens = minOf(pacing.burst.toDouble(), tokens + (now - filledAt) * rate / NANOS_PER_SECOND)
@@ -76,5 +86,11 @@ internal class RadioPacer(private val pacing: RadioPacing, clock: TimeSource) {
 
     private companion object {
         const val NANOS_PER_SECOND = 1e9
+
+        /** A MAVLink 2 frame's most bytes: header 10, payload 255, checksum 2, signature 13. */
+        const val MAX_FRAME_BYTES = 280
+
+        /** How many of the longest frames the floor waits for. */
+        const val FLOOR_FRAMES = 2
     }
 }
