@@ -24,7 +24,8 @@ private fun podMainClasses(): List<String> {
             "jar" -> FileSystems.newFileSystem(URI.create(uri.toString().substringBefore("!/")), emptyMap<String, Any>()).getPath("/")
             else -> return@flatMap emptyList()
         }
-        if ("test-classes" in root.toString()) return@flatMap emptyList()
+        // Tests' classes, as a directory or as a test jar (pod-mavlink's fuzz harness is one): not main code.
+        if ("test-classes" in root.toString() || "-tests.jar" in uri.toString()) return@flatMap emptyList()
         Files.walk(root.resolve("pod")).use { paths ->
             paths.filter { it.extension == "class" }.map { root.relativize(it).invariantSeparatorsPathString.removeSuffix(".class").replace('/', '.') }.toList()
         }

@@ -37,8 +37,11 @@ internal class PodProcess(val process: Process, scope: CoroutineScope) {
  */
 internal fun CoroutineScope.startPod(args: List<String>, environment: Map<String, String> = emptyMap()): PodProcess {
     val java = File(System.getProperty("java.home"), "bin/java").path
+    // `env --default-signal=INT`: a build started in the background of a non-interactive shell (`mvn … &`)
+    // passes SIGINT on as ignored, and a JVM that starts with SIGINT ignored installs no handler for
+    // it, so the Ctrl-C these tests send would go unheard; a terminal's `pod` always starts with it.
     val process = ProcessBuilder(
-        listOf(java, "-XX:+UseSerialGC", "-XX:TieredStopAtLevel=1", "-cp", System.getProperty("java.class.path"), "pod.cli.MainKt") + args,
+        listOf("env", "--default-signal=INT", java, "-XX:+UseSerialGC", "-XX:TieredStopAtLevel=1", "-cp", System.getProperty("java.class.path"), "pod.cli.MainKt") + args,
     ).also { it.environment().putAll(environment) }.start()
     process.outputStream.close()
     return PodProcess(process, this)

@@ -72,9 +72,12 @@ class ReadmeWalkthroughSpec : StringSpec({
             } finally {
                 watch.process.destroy()
                 sim.process.destroy()
-                watch.exitCode(30.seconds)
-                sim.exitCode(30.seconds)
-                processes.cancel()
+                try {
+                    watch.exitCode(30.seconds)
+                    sim.exitCode(30.seconds)
+                } finally {
+                    processes.cancel() // even if one would not exit: its output readers must not hold this scope open
+                }
             }
         }
     }

@@ -56,37 +56,42 @@ class RouteInteropSpec : StringSpec({
             val sim = SimVehicle(SimVehicleConfig(systemId = 43, gcs = "udpout://127.0.0.1:$vehiclePort", timeScale = 4.0))
             lateinit var mavproxy: Process
             try {
-                withTimeout(1.minutes) { route.out.first { lines -> lines.count { "\"listening\"" in it } == 3 } }
-                mavproxy = startMavproxyOn(dir, mavproxyPort, mavproxyLog)
-                sim.start(this)
-                val v = Flights.vehicle(gcs, 43)
-                val home = v.telemetry.position.value!!.location
-                Flights.keepArmedOnGround(v)
-                v.action.arm()
-                v.action.takeoff(10.m)
-                val target = home.offset(north = 30.m, east = 0.m, up = 10.m)
-                v.action.goto(target)
-                v.action.awaitArrival(target, within = 1.m, timeout = 2.minutes)
-                // MAVProxy heard the vehicle and its whole parameter list, which only its own PARAM_REQUEST_LIST (to 43/1,
-                // through the router) asks for: Pod's station writes one parameter, whose answer is a single PARAM_VALUE.
-                withTimeout(1.minutes) {
-                    while (mavproxyLog.count(43, MessageIds.HEARTBEAT) == 0 || mavproxyLog.count(43, PARAM_VALUE) < 20) delay(200.milliseconds)
+                try {
+                    withTimeout(1.minutes) { route.out.first { lines -> lines.count { "\"listening\"" in it } == 3 } }
+                    mavproxy = startMavproxyOn(dir, mavproxyPort, mavproxyLog)
+                    sim.start(this)
+                    val v = Flights.vehicle(gcs, 43)
+                    val home = v.telemetry.position.value!!.location
+                    Flights.keepArmedOnGround(v)
+                    v.action.arm()
+                    v.action.takeoff(10.m)
+                    val target = home.offset(north = 30.m, east = 0.m, up = 10.m)
+                    v.action.goto(target)
+                    v.action.awaitArrival(target, within = 1.m, timeout = 2.minutes)
+                    // MAVProxy heard the vehicle and its whole parameter list, which only its own PARAM_REQUEST_LIST (to 43/1,
+                    // through the router) asks for: Pod's station writes one parameter, whose answer is a single PARAM_VALUE.
+                    withTimeout(1.minutes) {
+                        while (mavproxyLog.count(43, MessageIds.HEARTBEAT) == 0 || mavproxyLog.count(43, PARAM_VALUE) < 20) delay(200.milliseconds)
+                    }
+                    sim.state.value.armed shouldBe true
+                } finally {
+                    runInterruptible(Dispatchers.IO) { mavproxy.destroy(); mavproxy.waitFor(30, TimeUnit.SECONDS) }
+                    sim.stop()
+                    withContext(NonCancellable) { gcs.closeAndAwait() }
                 }
-                sim.state.value.armed shouldBe true
+                route.signal("INT")
+                route.exitCode(30.seconds) shouldBe 130
+                val finals = route.out.value.filter { it.startsWith("{\"event\":\"route\"") }.map { EventJson.decode(it) as RouteSummary }.filter { it.final }
+                finals shouldHaveSize 3
+                finals[0].received shouldBeGreaterThan 100L // the vehicle's telemetry
+                finals[1].forwarded shouldBeGreaterThan 100L // to the Pod station
+                finals[2].forwarded shouldBeGreaterThan 100L // to MAVProxy
+                finals[2].received shouldBeGreaterThan 0L // MAVProxy's heartbeats and its parameter requests
             } finally {
-                runInterruptible(Dispatchers.IO) { mavproxy.destroy(); mavproxy.waitFor(30, TimeUnit.SECONDS) }
-                sim.stop()
-                withContext(NonCancellable) { gcs.closeAndAwait() }
+                // Whatever failed above, the router must not outlive the test, nor its output readers keep this scope open.
+                route.process.destroyForcibly()
+                processes.cancel()
             }
-            route.signal("INT")
-            route.exitCode(30.seconds) shouldBe 130
-            val finals = route.out.value.filter { it.startsWith("{\"event\":\"route\"") }.map { EventJson.decode(it) as RouteSummary }.filter { it.final }
-            finals shouldHaveSize 3
-            finals[0].received shouldBeGreaterThan 100L // the vehicle's telemetry
-            finals[1].forwarded shouldBeGreaterThan 100L // to the Pod station
-            finals[2].forwarded shouldBeGreaterThan 100L // to MAVProxy
-            finals[2].received shouldBeGreaterThan 0L // MAVProxy's heartbeats and its parameter requests
-            processes.cancel()
         }
     }
 

@@ -28,6 +28,22 @@ internal fun signingKey(keyFile: Path?): SigningKey? = try {
     badInput(e.message ?: "bad signing key")
 }
 
-/** [base] signed with [key] (on link id 0, unsigned frames refused but radio reports), or [base] when there is no key. */
-internal fun signedConfig(key: SigningKey?, base: GroundStationConfig = GroundStationConfig()): GroundStationConfig =
-    if (key == null) base else base.copy(signing = LinkSigning(key))
+/**
+ * [base] signed with [key] on [linkId] (unsigned frames refused but radio reports), or [base] when
+ * there is no key.
+ */
+internal fun signedConfig(key: SigningKey?, base: GroundStationConfig = GroundStationConfig(), linkId: Int = COMMAND_LINK_ID): GroundStationConfig =
+    if (key == null) base else base.copy(signing = LinkSigning(key, linkId))
+
+/**
+ * The signing link id of the commands that come and go (`pod arm`, `pod mission …`, `pod run`).
+ * A vehicle keeps one signing stream per system, component and link id, whose timestamp must grow
+ * (ArduPilot, mavlink_helpers.h `mavlink_signature_check`), and at most 16 of them until it
+ * reboots: every `pod` process shares system 255, component 190, so each kind of process keeps
+ * one fixed link id, and only processes that run side by side get different ones.
+ */
+internal const val COMMAND_LINK_ID: Int = 0
+
+/** `pod watch`'s signing link id: it runs beside the commands, whose frames must not look like replays of its own. */
+internal const val WATCH_LINK_ID: Int = 1
+

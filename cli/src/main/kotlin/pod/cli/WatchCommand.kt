@@ -39,7 +39,7 @@ internal class WatchCommand(private val out: Output) : CliktCommand(name = "watc
 
     override fun run() = runBlocking {
         val gcs = reportingLinkErrors {
-            GroundStation.open(connect, this, signedConfig(signingKey(keyFile), GroundStationConfig(lostAfter = lostAfter)))
+            GroundStation.open(connect, this, signedConfig(signingKey(keyFile), GroundStationConfig(lostAfter = lostAfter), WATCH_LINK_ID))
         }
         // Opened after the link, so a bad address leaves no empty file behind.
         val writer = record?.let { path ->
