@@ -9,7 +9,6 @@ import kotlinx.coroutines.CoroutineExceptionHandler
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.SupervisorJob
-import kotlinx.coroutines.cancel
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.job
@@ -102,13 +101,9 @@ class FieldLinkSpec : StringSpec({
                 } finally {
                     sim.stop()
                     gcs.close()
-                    watch.process.destroy()
-                    route.process.destroy()
                     try {
-                        watch.exitCode(30.seconds)
-                        route.exitCode(30.seconds)
+                        stopPods(processes, watch, route)
                     } finally {
-                        processes.cancel() // even if one would not exit: its output readers must not hold this scope open
                         Files.deleteIfExists(keyFile)
                     }
                 }

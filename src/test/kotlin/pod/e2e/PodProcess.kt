@@ -2,6 +2,7 @@ package pod.e2e
 
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.cancel
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
@@ -9,6 +10,7 @@ import kotlinx.coroutines.runInterruptible
 import kotlinx.coroutines.withTimeout
 import java.io.File
 import kotlin.time.Duration
+import kotlin.time.Duration.Companion.seconds
 
 /** A running `pod` process (a JVM of its own); its output lines as they come. */
 internal class PodProcess(val process: Process, scope: CoroutineScope) {
@@ -45,4 +47,17 @@ internal fun CoroutineScope.startPod(args: List<String>, environment: Map<String
     ).also { it.environment().putAll(environment) }.start()
     process.outputStream.close()
     return PodProcess(process, this)
+}
+
+/**
+ * Ends [pods] (SIGTERM) and waits for each at most [within]; then cancels [readers], the scope
+ * their output readers run in, even if one would not exit, so that it cannot hold a test open.
+ */
+internal suspend fun stopPods(readers: CoroutineScope, vararg pods: PodProcess, within: Duration = 30.seconds) {
+    pods.forEach { it.process.destroy() }
+    try {
+        pods.forEach { it.exitCode(within) }
+    } finally {
+        readers.cancel()
+    }
 }

@@ -9,7 +9,6 @@ import kotlinx.coroutines.CoroutineExceptionHandler
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.SupervisorJob
-import kotlinx.coroutines.cancel
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.job
 import kotlinx.coroutines.runInterruptible
@@ -70,14 +69,7 @@ class ReadmeWalkthroughSpec : StringSpec({
                 }
                 watch.out.value.none { "\"lost\"" in it } shouldBe true
             } finally {
-                watch.process.destroy()
-                sim.process.destroy()
-                try {
-                    watch.exitCode(30.seconds)
-                    sim.exitCode(30.seconds)
-                } finally {
-                    processes.cancel() // even if one would not exit: its output readers must not hold this scope open
-                }
+                stopPods(processes, watch, sim)
             }
         }
     }
