@@ -73,7 +73,7 @@ class ScriptRunSpec : StringSpec({
         val run = pod("run", script("fleet-and-distance.main.kts"), "--connect", address, "--time-scale", "10")
         run.err shouldBe "" // nothing to compile
         run.exitCode shouldBe 0
-        run.out shouldContainExactly listOf(distance, "fleet: Connect(address=$address, timeScale=10.0)", "dsl: PodDsl", "args: ")
+        run.out shouldContainExactly listOf(distance, "fleet: Connect(address=$address, timeScale=10.0, keyFile=null)", "dsl: PodDsl", "args: ")
         cache.listFiles()!!.filter { it.name.endsWith(".jar") } shouldHaveSize 1
     }
 

@@ -19,7 +19,6 @@ import kotlinx.coroutines.job
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withTimeoutOrNull
 import pod.mavlink.codec.FrameEncoder
-import pod.mavlink.codec.FrameLayout
 import pod.mavlink.codec.MavFrame
 import pod.mavlink.codec.MessageCodec
 import pod.mavlink.link.LinkException
@@ -63,7 +62,6 @@ public class GroundStation private constructor(
             config.timebase.dispatcher + CoroutineName("pod-gcs(${link.address})"),
     )
     private val encoder = FrameEncoder(codec)
-    private val sequences = SequenceNumbers()
     private val decoders = PeerDecoders(config.maxPeers, codec)
     private val signing = config.signing?.let { SignedFrames(it, codec) }
     private val _stats = MutableStateFlow(LinkStats())
@@ -74,6 +72,7 @@ public class GroundStation private constructor(
     private val taps = FrameTaps(config.clock)
     private val forwarding = pod.mavlink.route.StationForwarding(link, codec)
     private val pacer = RadioPacer(config.radioPacing, config.clock)
+    private val sender = StationSender(link, config, encoder, signing, pacer, taps)
     private val registry = VehicleRegistry(this, config.lostAfter, StreamRequests(scope, config, ::linkBroken)) { guarded(it) }
 
     /** Vehicles heard so far by system id, lost ones included (see [MavlinkVehicle.connection]). */
@@ -102,7 +101,7 @@ public class GroundStation private constructor(
         scope.launch(CoroutineName("heartbeat")) {
             while (isActive) {
                 try {
-                    link.sendToAll(encode(gcsHeartbeat()))
+                    sender.send(gcsHeartbeat(), peer = null, paced = false)
                 } catch (e: LinkException) {
                     linkBroken(e) // a TCP peer hung up; the receive side reports it too
                 }
@@ -134,9 +133,7 @@ public class GroundStation private constructor(
 
     /** Sends [message] to [vehicle] (to the address it was heard from, when listening). */
     public suspend fun sendTo(vehicle: MavlinkVehicle, message: Any) {
-        val bytes = pacedEncode(message)
-        val peer = vehicle.peer
-        if (peer != null) link.send(bytes, peer) else link.sendToAll(bytes)
+        sender.send(message, vehicle.peer)
     }
 
     /**
@@ -146,8 +143,8 @@ public class GroundStation private constructor(
      */
     internal fun sendNow(vehicle: MavlinkVehicle, message: Any): Boolean {
         val peer = vehicle.peer
-        if (!link.sendsInPlace || peer == null || pacer.active) return false
-        link.sendNow(encode(message), peer)
+        if (!sender.canSendNow || peer == null) return false
+        sender.sendNow(message, peer)
         return true
     }
 
@@ -163,8 +160,7 @@ public class GroundStation private constructor(
 
     /** Sends [message] to every peer of the link. */
     public suspend fun broadcast(message: Any) {
-        val bytes = pacedEncode(message)
-        link.sendToAll(bytes)
+        sender.send(message, peer = null)
     }
 
     /**
@@ -192,31 +188,6 @@ public class GroundStation private constructor(
     public suspend fun closeAndAwait(within: Duration = 2.seconds) {
         close()
         withTimeoutOrNull(within) { link.awaitClosed() }
-    }
-
-    private fun encode(message: Any): ByteArray = finish(encodeUnsigned(message))
-
-    /**
-     * [encode], waiting first for the radio's pacer when one is active. The frame is signed after
-     * the wait, not before: a signature's timestamp must grow from frame to frame on the link, and
-     * a frame signed before a wait could go out after one signed later by another sender, which
-     * the vehicle would then drop as a replay.
-     */
-    private suspend fun pacedEncode(message: Any): ByteArray {
-        if (!pacer.active) return encode(message)
-        val unsigned = encodeUnsigned(message)
-        pacer.pace(unsigned.size + if (signing == null) 0 else FrameLayout.SIGNATURE)
-        return finish(unsigned)
-    }
-
-    private fun encodeUnsigned(message: Any): ByteArray =
-        encoder.encode(message, config.systemId, config.componentId, sequences.next(config.systemId, config.componentId), config.mavlinkVersion)
-
-    /** Signs [encoded] when the link signs, and shows it to the taps. */
-    private fun finish(encoded: ByteArray): ByteArray {
-        val bytes = if (signing == null) encoded else signing.sign(encoded)
-        if (taps.active) taps.onFrame(FrameDirection.SENT, bytes)
-        return bytes
     }
 
     /**
