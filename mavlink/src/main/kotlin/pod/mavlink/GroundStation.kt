@@ -277,7 +277,8 @@ public class GroundStation private constructor(
          * Opens [connection] (`udpin://0.0.0.0:14550`, `udpout:127.0.0.1:14550`, `tcp://…`) and
          * starts the station in [scope]. Throws the link's typed errors
          * ([pod.mavlink.link.InvalidConnectionString], [pod.mavlink.link.PortInUse],
-         * [pod.mavlink.link.HostUnreachable]).
+         * [pod.mavlink.link.HostUnreachable], and for a serial port [pod.mavlink.link.DeviceNotFound]
+         * and [pod.mavlink.link.DeviceUnavailable]).
          */
         public suspend fun open(
             connection: String,
