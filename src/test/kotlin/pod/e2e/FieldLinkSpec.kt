@@ -16,13 +16,9 @@ import kotlinx.coroutines.runInterruptible
 import kotlinx.coroutines.withTimeout
 import pod.cli.json.Event
 import pod.cli.json.EventJson
-import pod.core.units.m
 import pod.core.vehicle.LandedState
 import pod.mavlink.GroundStation
 import pod.mavlink.GroundStationConfig
-import pod.mavlink.command.MavCommands.NAV_RETURN_TO_LAUNCH
-import pod.mavlink.command.MavCommands.NAV_TAKEOFF
-import pod.mavlink.command.MavCommands.NAV_WAYPOINT
 import pod.mavlink.signing.LinkSigning
 import pod.mavlink.signing.SigningKey
 import pod.sim.SimVehicle
@@ -65,15 +61,7 @@ class FieldLinkSpec : StringSpec({
                     watch.awaitOut(1.minutes) { "\"found\"" in it && "\"sysid\":61" in it }
 
                     val home = config.home
-                    vehicle.mission.upload(
-                        listOf(
-                            Flights.home(home),
-                            Flights.item(1, NAV_TAKEOFF, altitude = 20.0),
-                            Flights.item(2, NAV_WAYPOINT, home.offset(150.m, 0.m), 20.0),
-                            Flights.item(3, NAV_WAYPOINT, home.offset(150.m, 150.m), 20.0),
-                            Flights.item(4, NAV_RETURN_TO_LAUNCH),
-                        ),
-                    )
+                    vehicle.mission.upload(Flights.copterLeg(home, side = 150.0))
                     Flights.keepArmedOnGround(vehicle)
                     vehicle.action.arm()
                     vehicle.action.startMission()

@@ -39,6 +39,15 @@ internal object Flights {
     /** Item 0 as ArduPilot keeps it: home, absolute altitude. */
     fun home(at: Location) = item(0, NAV_WAYPOINT, at).copy(frame = 0, z = at.altitude.meters.toFloat())
 
+    /** Takeoff to 20 m, [side] north, [side] east, return to launch: a copter's L out and home. */
+    fun copterLeg(home: Location, side: Double): List<MissionItem> = listOf(
+        home(home),
+        item(1, NAV_TAKEOFF, altitude = 20.0),
+        item(2, NAV_WAYPOINT, home.offset(side.m, 0.m), 20.0),
+        item(3, NAV_WAYPOINT, home.offset(side.m, side.m), 20.0),
+        item(4, NAV_RETURN_TO_LAUNCH),
+    )
+
     /** Takeoff to 20 m, five waypoints around home, two loiter turns at the last one, return to launch. */
     fun copterSurvey(home: Location): List<MissionItem> {
         val points = listOf(40 to 0, 40 to 40, 0 to 60, -40 to 40, -30 to 0).map { (n, e) -> home.offset(n.m, e.m) }

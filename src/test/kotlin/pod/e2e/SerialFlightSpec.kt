@@ -13,16 +13,12 @@ import kotlinx.coroutines.flow.filterIsInstance
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.runInterruptible
 import kotlinx.coroutines.withTimeout
-import pod.core.units.m
 import pod.core.vehicle.ConnectionState
 import pod.core.vehicle.LandedState
 import pod.mavlink.FleetEvent
 import pod.mavlink.GroundStation
 import pod.mavlink.GroundStationConfig
 import pod.mavlink.MavlinkVehicle
-import pod.mavlink.command.MavCommands.NAV_RETURN_TO_LAUNCH
-import pod.mavlink.command.MavCommands.NAV_TAKEOFF
-import pod.mavlink.command.MavCommands.NAV_WAYPOINT
 import pod.mavlink.link.ByteStreamLink
 import pod.mavlink.link.LinkState
 import pod.sim.SimVehicle
@@ -55,15 +51,7 @@ class SerialFlightSpec : StringSpec({
             val config = SimVehicleConfig(systemId = 42, timeScale = 5.0)
             serialFlight(pair, config, GroundStationConfig(lostAfter = 1.seconds)) { gcs, vehicle, _ ->
                 val home = config.home
-                vehicle.mission.upload(
-                    listOf(
-                        Flights.home(home),
-                        Flights.item(1, NAV_TAKEOFF, altitude = 20.0),
-                        Flights.item(2, NAV_WAYPOINT, home.offset(200.m, 0.m), 20.0),
-                        Flights.item(3, NAV_WAYPOINT, home.offset(200.m, 200.m), 20.0),
-                        Flights.item(4, NAV_RETURN_TO_LAUNCH),
-                    ),
-                )
+                vehicle.mission.upload(Flights.copterLeg(home, side = 200.0))
                 Flights.keepArmedOnGround(vehicle)
                 vehicle.action.arm()
                 vehicle.action.startMission()
