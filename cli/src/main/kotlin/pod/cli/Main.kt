@@ -24,6 +24,7 @@ class Pod(out: Output = TerminalOutput.standard()) : CliktCommand(name = "pod") 
         configureContext { helpFormatter = { MordantHelpFormatter(it, showDefaultValues = true) } }
         subcommands(listOf(SimCommand(out), WatchCommand(out), ReplayCommand(out), DemoCommand(out), MapCommand(out), SurveyCommand(out), RunCommand(), MissionGroup(out), ParamGroup(out), pod.cli.queue.QueueGroup(out), SigningGroup(out)) + actionCommands(out))
         subcommands(RouteCommand(out))
+        subcommands(pod.cli.gcs.GcsCommand(out))
     }
 
     override fun help(context: Context): String = "Program fleets of drones over MAVLink."

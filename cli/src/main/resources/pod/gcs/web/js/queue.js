@@ -1,0 +1,4 @@
+// Pod ground station: the queue panel.
+
+/** Called once at start with the page's app (see app.js). */
+export function init(app) {}
