@@ -96,10 +96,10 @@ class GcsEventLogSpec : StringSpec({
     }
 })
 
-/** The vehicles (`data-vehicles`) of each log line not hidden. */
+/** The vehicles (`data-vehicles`) of each log line the page lays out (one hidden has no boxes). */
 @Suppress("UNCHECKED_CAST")
 private fun shownLines(browser: GcsBrowser): List<String> =
-    browser.js("return [...document.querySelectorAll('#events li')].filter((li) => !li.hidden).map((li) => li.dataset.vehicles)") as List<String>
+    browser.js("return [...document.querySelectorAll('#events li')].filter((li) => li.getClientRects().length > 0).map((li) => li.dataset.vehicles)") as List<String>
 
 private fun lastLine(browser: GcsBrowser): String? =
     browser.js("const li = document.querySelector('#events li.ev:last-child .what'); return li ? li.textContent : null") as String?

@@ -59,6 +59,10 @@ internal object MapProbe {
     /** Whether two [labelBoxes] overlap. */
     fun overlap(a: List<Double>, b: List<Double>): Boolean = a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3]
 
+    /** The pairs of [labelBoxes] that overlap (none, when the labels are laid out right). */
+    fun overlapping(boxes: List<List<Double>>): List<Pair<List<Double>, List<Double>>> =
+        boxes.indices.flatMap { i -> (i + 1 until boxes.size).filter { j -> overlap(boxes[i], boxes[j]) }.map { j -> boxes[i] to boxes[j] } }
+
     /** The scale bar: its length in pixels, the metres it stands for, its text; and the map's pixels per metre. */
     @Suppress("UNCHECKED_CAST")
     fun scaleBar(browser: GcsBrowser): Map<String, Any?> = browser.js(

@@ -71,6 +71,11 @@ function newRow(app, sysid) {
 }
 
 function update(app, row, v) {
+  const selected = app.selected === v.sysid;
+  if (row.classList.contains("selected") !== selected) row.classList.toggle("selected", selected);
+  // The page replaces a vehicle's telemetry and status objects only when they change: same objects, same cells.
+  if (row.shown && row.shown.telemetry === v.telemetry && row.shown.status === v.status && row.shown.lost === v.lost) return;
+  row.shown = { telemetry: v.telemetry, status: v.status, lost: v.lost };
   cells(v).forEach(([text, cls], c) => {
     const td = row.cells[c];
     if (td.textContent !== text) {
@@ -85,8 +90,6 @@ function update(app, row, v) {
     }
   });
   if (row.classList.contains("lost") !== v.lost) row.classList.toggle("lost", v.lost);
-  const selected = app.selected === v.sysid;
-  if (row.classList.contains("selected") !== selected) row.classList.toggle("selected", selected);
 }
 
 export function init(app) {

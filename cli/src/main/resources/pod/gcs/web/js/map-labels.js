@@ -8,12 +8,25 @@
 // laying out 250 labels costs a few thousand box tests, not 250².
 
 const CELL = 48;
+const PAD = 4; // the label's white halo (a 3 px stroke) and a hair of air
 const MARKER_HALF = 10; // a marker's box is 20 × 20 px around its centre
 const GAP = 12; // between a marker's centre and its label
-const LINE = 14; // a label's height in pixels (11 px text)
+const MAX_RING = 2; // farther out, leader lines criss-cross a dense fleet more than they help
+const LINE = 16; // a label's box height in pixels: 11 px text, its descent and halo
+export const BASELINE = 12; // from the box's top to the text's baseline
+export const INSET = PAD / 2; // from the box's left to the text's start
 
-/** A label's width in pixels, estimated from its length (measuring text would force a layout per label). */
-export function labelWidth(text) { return 6.2 * text.length + 6; }
+let measure = null;
+
+/**
+ * A label's width in pixels for its text in the map's label font (`font`, a CSS font shorthand):
+ * measured on a canvas, which costs no layout, unlike measuring the SVG text itself.
+ */
+export function labelWidth(text, font) {
+  if (!measure) measure = document.createElement("canvas").getContext("2d");
+  if (measure.font !== font) measure.font = font;
+  return Math.ceil(measure.measureText(text).width) + PAD;
+}
 
 /**
  * Places labels: `items` [{key, x, y, width}] (marker centre in pixels), highest priority first.
@@ -42,7 +55,7 @@ function candidates(w) {
     { dx: -GAP - w, dy: -LINE - 4, ring: 0 }, { dx: -GAP - w, dy: 4, ring: 0 },
     { dx: -w / 2, dy: -LINE - GAP - 4, ring: 0 }, { dx: -w / 2, dy: GAP + 4, ring: 0 },
   ];
-  for (let ring = 1; ring <= 4; ring++) {
+  for (let ring = 1; ring <= MAX_RING; ring++) {
     const up = -LINE - 4 - ring * (LINE + 4), down = 4 + ring * (LINE + 4), out = GAP + ring * 14;
     list.push({ dx: out, dy: up, ring }, { dx: out, dy: down, ring }, { dx: -out - w, dy: up, ring }, { dx: -out - w, dy: down, ring });
   }

@@ -8,7 +8,7 @@
 // Cost per batch with 250 vehicles: only markers whose telemetry, state or screen position changed
 // are touched; a track grows by appending to its SVG point list, never by rewriting it.
 import { el, world, toScreen, layer, screenLayer, onRedraw, onUserView, fit } from "./map.js";
-import { placeLabels, labelWidth } from "./map-labels.js";
+import { placeLabels, labelWidth, BASELINE, INSET } from "./map-labels.js";
 
 const PALETTE = ["#1f6feb", "#00897b", "#7b1fa2", "#2e7d32", "#5d4037", "#283593", "#ad1457", "#827717"];
 const TRACK_POINTS = 3000;
@@ -31,6 +31,17 @@ export function fitFleet() {
     if (v.home) points.push({ lat: v.home.lat, lon: v.home.lon });
   }
   fit(points);
+}
+
+/** The CSS font of a label (bold when selected or lost), read once per weight: canvas measuring needs it. */
+const fonts = new Map();
+function labelFont(label) {
+  const bold = label.classList.contains("selected") || label.classList.contains("lost");
+  if (!fonts.has(bold)) {
+    const style = getComputedStyle(label);
+    fonts.set(bold, `${style.fontWeight} ${style.fontSize} ${style.fontFamily}`);
+  }
+  return fonts.get(bold);
 }
 
 function labelText(v) {
@@ -99,7 +110,8 @@ function drawVehicle(v) {
     m.telemetry = t;
   }
   const state = `${v.lost ? "lost" : ""} ${appRef.selected === v.sysid ? "selected" : ""}`;
-  if (state !== m.state) {
+  const restyled = state !== m.state;
+  if (restyled) {
     m.state = state;
     for (const node of [m.g, m.label, m.line]) {
       node.classList.toggle("lost", v.lost);
@@ -108,32 +120,46 @@ function drawVehicle(v) {
     moved = true;
   }
   const text = labelText(v);
-  if (text !== m.text) { m.text = text; m.label.textContent = text; moved = true; }
+  if (text !== m.text || restyled) {
+    m.text = text;
+    m.label.textContent = text;
+    m.width = labelWidth(text, labelFont(m.label)); // bold when selected or lost: wider
+    moved = true;
+  }
   return moved;
 }
 
 /** Lays the labels out again: the selected vehicle's first, then lost ones, then by sysid. */
 function layoutLabels() {
   const items = [...markers.entries()].filter(([, m]) => m.screen)
-    .map(([sysid, m]) => ({ key: sysid, x: m.screen.x, y: m.screen.y, width: labelWidth(m.text), m }))
+    .map(([sysid, m]) => ({ key: sysid, x: m.screen.x, y: m.screen.y, width: m.width, m }))
     .sort((a, b) => rank(a.key) - rank(b.key) || a.key - b.key);
   const spots = placeLabels(items);
   let hidden = 0;
   for (const it of items) {
-    const spot = spots.get(it.key), m = it.m;
-    m.label.style.display = spot ? "" : "none";
-    m.leader.style.display = spot && spot.leader ? "" : "none";
-    if (!spot) { hidden++; continue; }
-    m.label.setAttribute("x", spot.x.toFixed(1));
-    m.label.setAttribute("y", (spot.y + 11).toFixed(1));
-    if (spot.leader) {
-      const toRight = spot.x > it.x;
-      Object.entries({ x1: it.x, y1: it.y, x2: toRight ? spot.x : spot.x + it.width, y2: spot.y + 7 })
-        .forEach(([k, val]) => m.leader.setAttribute(k, val.toFixed(1)));
-    }
+    const spot = spots.get(it.key);
+    if (!spot) hidden++;
+    placeLabel(it.m, spot, it);
   }
   note.textContent = hidden ? `${hidden} label${hidden > 1 ? "s" : ""} hidden: zoom in` : "";
   note.style.display = hidden ? "" : "none";
+}
+
+/** Moves one label (and its leader line) to `spot`, or hides it; writes the DOM only for what changed. */
+function placeLabel(m, spot, it) {
+  const key = spot ? `${(spot.x + INSET).toFixed(1)} ${(spot.y + BASELINE).toFixed(1)} ${spot.leader ? `${it.x.toFixed(1)} ${it.y.toFixed(1)}` : ""}` : "hidden";
+  if (key === m.placed) return;
+  m.placed = key;
+  m.label.style.display = spot ? "" : "none";
+  m.leader.style.display = spot && spot.leader ? "" : "none";
+  if (!spot) return;
+  m.label.setAttribute("x", (spot.x + INSET).toFixed(1));
+  m.label.setAttribute("y", (spot.y + BASELINE).toFixed(1));
+  if (spot.leader) {
+    const toRight = spot.x > it.x;
+    const ends = { x1: it.x, y1: it.y, x2: toRight ? spot.x : spot.x + it.width, y2: spot.y + BASELINE / 2 + 2 };
+    for (const [k, val] of Object.entries(ends)) m.leader.setAttribute(k, val.toFixed(1));
+  }
 }
 
 function rank(sysid) {
