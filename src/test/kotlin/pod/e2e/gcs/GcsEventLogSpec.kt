@@ -16,8 +16,9 @@ class GcsEventLogSpec : StringSpec({
             browser.open(gcs.url)
             browser.awaitTrue("vehicle 1's row") { MapProbe.cell(browser, 1, "last-text") != null }
             val v = gcs.sim.station.vehicles.value[1]!!
-            // ArduCopter will not arm in LAND (ArduCopter/mode.h: ModeLand::allows_arming is false);
-            // it answers COMMAND_ACK FAILED and the line "Arm: Mode not armable" at CRITICAL.
+            // ArduCopter will not arm in LAND (ArduCopter/mode.h: ModeLand::allows_arming returns false;
+            // AP_Arming_Copter::mandatory_checks then check_failed(true, "Mode not armable"), which
+            // AP_Arming sends at MAV_SEVERITY_CRITICAL with "Arm: " while arming), with COMMAND_ACK FAILED.
             v.action.setMode("LAND")
             val refusal = shouldThrow<PodException> { v.action.arm() }
             refusal.message!! shouldContain "Mode not armable"
@@ -50,7 +51,10 @@ class GcsEventLogSpec : StringSpec({
             gcs.fleet.logEvent(Event.Warning("battery of vehicle 1 at 25%"))
             gcs.fleet.logEvent(Event.TaskFailed(2.0, 7, "survey north", "vehicle 1 lost"))
             gcs.fleet.logEvent(Event.TaskDone(3.0, 8, "ferry"))
-            browser.awaitTrue("five more lines") { browser.findAll("#events li.ev").size >= 7 }
+            // A kind the log has no words for (another panel's) is shown as its JSON.
+            gcs.fleet.logEvent(Event.Listening("udpin:0.0.0.0:14550", 14550))
+            browser.awaitTrue("six more lines") { browser.findAll("#events li.ev").size >= 8 }
+            browser.findAll("#events li.ev-listening").single().text shouldContain "listening: {\"address\":\"udpin:0.0.0.0:14550\",\"port\":14550}"
 
             fun line(kind: String) = browser.findAll("#events li.ev-$kind").last()
             line("task_failed").let {

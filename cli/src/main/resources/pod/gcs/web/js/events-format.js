@@ -59,7 +59,12 @@ const FORMATS = {
 };
 
 /** Kinds that are states (the latest replaces the last), not happenings: never a log line. */
-export const NOT_LOGGED = new Set(["telemetry", "home", "vehicle_status", "queue_status", "radio", "reply", "gcs_hello", "gcs_batch"]);
+const STATES = new Set(["telemetry", "home", "radio", "reply", "gcs_hello", "gcs_batch"]);
+
+/** Whether an event of `kind` is a state rather than a happening: the kinds above and any `…_status` or `…_state` (a panel's own). */
+export function notLogged(kind) {
+  return STATES.has(kind) || kind.endsWith("_status") || kind.endsWith("_state");
+}
 
 /** The first system id an unknown event names (sysid, vehicle, vehicles), for the filter. */
 function vehiclesOf(e) {

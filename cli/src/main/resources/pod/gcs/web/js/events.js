@@ -6,7 +6,7 @@
 //
 // The server replays its recent log when a page connects: those lines come in the first batch and
 // are marked "before" (their time is not known here), followed by a "live" separator.
-import { format, NOT_LOGGED } from "./events-format.js";
+import { format, notLogged } from "./events-format.js";
 
 const MAX_LINES = 1000;
 const BOTTOM_SLACK_PX = 24; // this close to the bottom counts as "at the bottom": keep following
@@ -26,7 +26,7 @@ function shown(li) {
 }
 
 function add(e) {
-  if (NOT_LOGGED.has(e.event)) return;
+  if (notLogged(e.event)) return;
   const line = format(e);
   const li = document.createElement("li");
   li.className = `ev ev-${line.kind}${line.level ? ` ${line.level}` : ""}${replaying ? " before" : ""}`;
