@@ -36,10 +36,11 @@ internal class GcsFixture private constructor(
             host: String = "127.0.0.1",
             flavors: List<SimFlavor> = List(count) { SimFlavor.ARDUCOPTER },
             configure: (SimVehicleConfig) -> SimVehicleConfig = { it },
+            tiles: String? = null,
         ): GcsFixture {
             val scope = CoroutineScope(SupervisorJob() + Dispatchers.Default)
             val sim = SimPlatform.start(scope, flavors, timeScale, configure = configure)
-            val fleet = GcsFleet(sim.station, scope, "${flavors.size} simulated copters", timeScale)
+            val fleet = GcsFleet(sim.station, scope, "${flavors.size} simulated copters", timeScale, tiles)
             val server = GcsServer.start(fleet, host, 0)
             return GcsFixture(scope, sim, fleet, server)
         }

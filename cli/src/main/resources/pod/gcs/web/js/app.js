@@ -25,7 +25,7 @@ export const app = {
   token: new URLSearchParams(location.search).get("token"),
   stats: { batches: 0, events: 0, lastSeq: 0 },
 
-  /** Calls fn(event) for every event of this kind, after the fleet state took it in. */
+  /** Calls fn(event) for every event of this kind, after the fleet state took it in ("*": of every kind). */
   on(kind, fn) {
     if (!handlers.has(kind)) handlers.set(kind, []);
     handlers.get(kind).push(fn);
@@ -78,6 +78,7 @@ function take(e) {
     }
   }
   (handlers.get(e.event) || []).forEach((fn) => fn(e));
+  (handlers.get("*") || []).forEach((fn) => fn(e));
 }
 
 function connect() {
