@@ -37,14 +37,15 @@ public data class QueueInsert(
 ) : GcsRequest {
     override suspend fun answer(fleet: GcsFleet): String {
         val how = INSERT_MODES[mode] ?: throw IllegalArgumentException("mode must be one of ${INSERT_MODES.keys.joinToString()}, was $mode")
-        val asked = withTurns().toElement()
-        return pageAction(fleet, sysid, "queue $mode ${withTurns().describe()}") {
+        val asking = withTurns()
+        val asked = asking.toElement()
+        return pageAction(fleet, sysid, "queue $mode ${asking.describe()}") {
             wire.encodeToString(EntryJson.serializer(), fleet.queues.insert(sysid, how, asked).toJson())
         }.orEmpty()
     }
 
     /** [element] with [turns] turned into its duration: turns × 2π|r| ÷ the circling speed. */
-    private fun withTurns(): ElementJson {
+    internal fun withTurns(): ElementJson {
         val n = turns ?: return element
         val circle = element.pattern as? PatternJson.Circle ?: throw IllegalArgumentException("turns are for a circle, not a ${element.pattern::class.simpleName?.lowercase()}")
         require(element.durationS == null) { "give a circle turns or a duration, not both" }
