@@ -104,4 +104,24 @@ class GcsCommandsSpec : StringSpec({
             browser.awaitTrue("the sim descending below 5 m") { gcs.sim[1].height < 5 }
         }
     }
+
+    "pause holds a goto where the vehicle is, and resume flies it on to the point" {
+        withGcs(count = 1, timeScale = 5.0) { gcs, browser ->
+            gcs.flyingOnPage(browser, height = 10.0)
+            val target = gcs.sim[1].offset(north = 0.0, east = 150.0)
+            browser.find("#commands-panel button[data-command='goto']").click()
+            browser.clickMap(target)
+            browser.awaitAnswer("goto") shouldStartWith "ok"
+            browser.awaitTrue("the sim under way") { gcs.sim[1].groundSpeed > 2 }
+
+            browser.find("#commands-panel button[data-command='pause']").click()
+            browser.awaitAnswer("pause") shouldStartWith "ok"
+            browser.awaitTrue("the sim holding", 30.seconds) { gcs.sim[1].groundSpeed < 0.3 }
+            (gcs.sim[1].distanceTo(target) > 30) shouldBe true
+
+            browser.find("#commands-panel button[data-command='resume']").click()
+            browser.awaitAnswer("resume") shouldStartWith "ok"
+            browser.awaitTrue("the sim at the point after resuming", 60.seconds) { gcs.sim[1].distanceTo(target) < 3 }
+        }
+    }
 })
