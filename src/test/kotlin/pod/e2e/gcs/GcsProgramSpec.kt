@@ -3,15 +3,21 @@ package pod.e2e.gcs
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
+import io.kotest.matchers.string.shouldNotContain
+import io.kotest.matchers.string.shouldStartWith
 import kotlinx.coroutines.CoroutineExceptionHandler
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.SupervisorJob
+import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.runBlocking
+import kotlinx.coroutines.withTimeout
 import pod.e2e.PodProcess
 import pod.e2e.startPod
 import pod.e2e.stopPods
 import java.io.File
+import java.net.InetAddress
+import java.net.ServerSocket
 import java.nio.file.Files
 import kotlin.time.Duration.Companion.minutes
 import kotlin.time.Duration.Companion.seconds
@@ -92,7 +98,33 @@ class GcsProgramSpec : StringSpec({
             run.process.exitValue() shouldBe 130
         }
     }
+
+    "--gcs that cannot be served is bad input (exit 2) before anything runs; without a value it takes the next option as none" {
+        runBlocking {
+            val readers = quietReaders()
+            val taken = ServerSocket(0, 1, InetAddress.getLoopbackAddress())
+            val script = File(GcsProgramSpec::class.java.getResource("/scripts/gcs-program.main.kts")!!.toURI()).path
+            try {
+                val inUse = readers.startPod(listOf("run", script, "--gcs", "127.0.0.1:${taken.localPort}"))
+                val notAnAddress = readers.startPod(listOf("demo", "--gcs", "nowhere"))
+                // Given bare, --gcs leaves `--for forever` to --for, which refuses it.
+                val bare = readers.startPod(listOf("demo", "--gcs", "--for", "forever"))
+                for (pod in listOf(inUse, notAnAddress, bare)) pod.exitCode(2.minutes) shouldBe 2
+                errorLine(inUse) shouldStartWith "error: cannot serve the ground station on 127.0.0.1:${taken.localPort}"
+                errorLine(notAnAddress) shouldContain "not HOST:PORT with a port in 0..65535: 'nowhere'"
+                errorLine(bare) shouldContain "forever"
+                errorLine(bare) shouldNotContain "HOST:PORT"
+            } finally {
+                taken.close()
+                stopPods(readers)
+            }
+        }
+    }
 })
+
+/** The line [pod] wrote to standard error that starts with `error:` or `Error:`, once its reader has it. */
+private suspend fun errorLine(pod: PodProcess): String =
+    withTimeout(30.seconds) { pod.err.first { lines -> lines.any { it.startsWith("error:", ignoreCase = true) } } }.first { it.startsWith("error:", ignoreCase = true) }
 
 /** Where a process's output readers run: one may end with "Stream closed" when the process exits, not a failure here. */
 private fun quietReaders() = CoroutineScope(SupervisorJob() + Dispatchers.IO + CoroutineExceptionHandler { _, _ -> })
