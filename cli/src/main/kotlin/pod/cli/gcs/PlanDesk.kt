@@ -67,6 +67,12 @@ internal class PlanDesk(private val fleet: GcsFleet) {
     }
 
     /** Downloads vehicle [sysid]'s three lists and shows them on the map; returns them as a plan. */
+    suspend fun show(sysid: Int): QgcPlan {
+        val vehicle = fleet.vehicle(sysid)
+        return exclusive(sysid, "reading what it holds") { downloadLocked(vehicle, logged = true) }
+    }
+
+    /** [show], and the plan gets the speed the vehicle flies by default: the .plan file to save. */
     suspend fun download(sysid: Int): QgcPlan {
         val vehicle = fleet.vehicle(sysid)
         // The file records the speed the vehicle flies by default, as `pod mission download` writes it.
@@ -152,6 +158,6 @@ internal class PlanDesk(private val fleet: GcsFleet) {
         val LISTS = listOf(MissionType.MISSION, MissionType.FENCE, MissionType.RALLY)
 
         /** What [PlanProgress.file] says for a download. */
-        const val ON_BOARD = "on board"
+        const val ON_BOARD = "its plan"
     }
 }

@@ -36,7 +36,7 @@ public data class PlanUpload(
 @Serializable @SerialName("plan_on_board")
 public data class PlanOnBoard(override val id: Long, val sysid: Int) : GcsRequest {
     override suspend fun answer(fleet: GcsFleet): String {
-        val plan = fleet.service(PlanDesk::class) { PlanDesk(it) }.download(sysid)
+        val plan = fleet.service(PlanDesk::class) { PlanDesk(it) }.show(sysid)
         val fence = plan.geoFence.polygons.sumOf { it.vertices.size } + plan.geoFence.circles.size
         return "vehicle $sysid holds ${plan.mission.size} mission items, $fence fence items and ${plan.rallyPoints.size} rally points"
     }

@@ -7,7 +7,7 @@ import kotlinx.serialization.Serializable
 // it went, and the lists a vehicle holds as the map draws them; and where a program's page is served.
 
 /**
- * A plan transfer of vehicle [sysid] under way: [file] (the page's file name, or `on board` for a
+ * A plan transfer of vehicle [sysid] under way: [file] (the page's file name, or `its plan` for a
  * download), [list] the list moving now (mission, fence, rally), [done] of [total] items.
  * [waiting] says why it has not started yet, when the vehicle makes it wait (an abandoned upload
  * still held). [finished] is set on the last one, and [failed] too when it did not go through.
