@@ -16,7 +16,14 @@ import kotlinx.coroutines.runBlocking
 import pod.cli.json.Event
 import pod.cli.json.EventJson
 import pod.cli.json.toEvent
+import pod.cli.gcs.GcsRequestException
+import pod.cli.gcs.GcsWatcher
+import pod.cli.gcs.HttpAddress
+import pod.cli.gcs.gcsOption
+import pod.cli.json.GcsServing
+import pod.launch.FleetWatcher
 import pod.launch.Interruption
+import pod.mavlink.GroundStation
 import pod.launch.Interrupted
 import pod.dsl.action
 import pod.dsl.and
@@ -43,6 +50,7 @@ internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo"
         .default(30.minutes)
     private val map by option("--map", help = "where to write the map of missions and tracks: .svg, .geojson or .kml").path().default(Path("pod-demo-map.svg"))
     private val json by option("--json", help = "JSON lines instead of text").flag()
+    private val gcs by gcsOption()
 
     override fun help(context: Context): String =
         "Dolphin's Listing 4 on simulated drones (two kept on survey, each replaced by a charged one when its battery runs low), and a mission queue fed while one more flies it."
@@ -52,20 +60,23 @@ internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo"
         LocalFiles.checkMapOutput(map.toString())
         val view = LiveView(out, json, period = if (json) 20.seconds else 5.seconds)
         var failed: Throwable? = null
+        var page: FleetWatcher.Watch? = null
         try {
             simulate(
                 flavors = List(count) { SimFlavor.ARDUCOPTER },
                 timeScale = timeScale,
                 onLine = { if (!json) view.note(it) },
-                onEvent = { if (json) it.toEvent()?.let { e -> out.line(EventJson.encode(e)) } },
+                onEvent = { page?.event(it); if (json) it.toEvent()?.let { e -> out.line(EventJson.encode(e)) } },
                 map = map,
             ) { sim ->
                 val shown = launch { view.show(sim.station) }
                 view.note("$count simulated drones at ${timeScale}x; keeping 2 on survey for $length of vehicle time, and one flying a mission queue")
                 try {
+                    page = gcs?.let { at -> servePage(at, sim.station, view) }
                     Interruption.cancellable { execute(action("queue tour") { queueTour() } and action("listing 4") { listing4(duration = length) }) }
                 } finally {
                     shown.cancel()
+                    page?.close()
                     view.finish(sim.station)
                 }
             }
@@ -81,5 +92,14 @@ internal class DemoCommand(private val out: Output) : CliktCommand(name = "demo"
         if (json) out.line(EventJson.encode(Event.DemoDone(ok = failed == null, error = failed?.let { it.message ?: it::class.simpleName }, map = map.toString())))
         else out.line(if (failed == null) "demo done; map of missions and tracks: $map" else "demo failed: ${failed.message}; map so far: $map")
         if (failed != null) throw CliktError("demo failed: ${failed.message}", statusCode = 1)
+    }
+
+    // `--gcs`: the demo's fleet on the ground station's page too, its program's events in the page's log.
+    private suspend fun servePage(at: HttpAddress, station: GroundStation, view: LiveView): FleetWatcher.Watch = try {
+        GcsWatcher(at) { server ->
+            if (json) out.line(EventJson.encode(GcsServing(server.url))) else view.note("ground station: open ${server.url}")
+        }.watch(station, timeScale, "pod demo: $count simulated copters")
+    } catch (e: GcsRequestException) {
+        badInput(e.message!!)
     }
 }

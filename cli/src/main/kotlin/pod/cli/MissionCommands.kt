@@ -206,14 +206,8 @@ internal class MissionDownloadCommand(out: Output) : MissionAction(out, "downloa
         val lists = listOf(MissionType.MISSION, MissionType.FENCE, MissionType.RALLY).associateWith { type ->
             withProgress(vehicle.systemId, "downloading", vehicle.mission.downloading(type))?.items.orEmpty()
         }
-        val identity = vehicle.identity.value
-        // The station asks for HOME_POSITION on discovery; a vehicle that has a home answers within a moment.
-        val home = withTimeoutOrNull(HOME_WAIT) { vehicle.telemetry.home.filterNotNull().first() }
         val plan = try {
-            PlanOnVehicle.plan(
-                lists.getValue(MissionType.MISSION), lists.getValue(MissionType.FENCE), lists.getValue(MissionType.RALLY),
-                identity.autopilot, identity.type, home,
-            ).let { PlanSpeeds.from(vehicle, it) }
+            PlanSpeeds.from(vehicle, planOf(vehicle, lists, HOME_WAIT))
         } catch (e: PlanListException) {
             fail("vehicle ${vehicle.systemId}'s lists cannot be written as a .plan file: ${e.message}")
         }

@@ -13,7 +13,10 @@ import com.github.ajalt.clikt.parameters.types.restrictTo
 import pod.cli.script.ScriptClasspath
 import pod.cli.script.ScriptHost
 import pod.cli.script.ScriptOutcome
+import pod.cli.gcs.GcsWatcher
+import pod.cli.gcs.gcsOption
 import pod.launch.FleetChoice
+import pod.launch.FleetWatcher
 import pod.launch.Interruption
 import pod.launch.interruptionIn
 import pod.mavlink.link.DeviceNotFound
@@ -41,6 +44,7 @@ internal class RunCommand : CliktCommand(name = "run") {
     private val connect by option("--connect", metavar = "ADDR", help = "fly the vehicles on this link (udpin://0.0.0.0:14550, serial:///dev/ttyUSB0:57600, …)")
     private val timeScale by option("--time-scale", metavar = "X", help = "vehicle seconds per real second (default: 1): the simulated fleet's with --sim; with --connect, that of a simulator run faster (pod sim --time-scale X), so the program's durations count in vehicle time")
         .double().restrictTo(0.01..1000.0)
+    private val gcs by gcsOption()
 
     override fun help(context: Context): String =
         "Run a .main.kts script with Pod on its classpath, on a simulated or a real fleet."
@@ -53,12 +57,19 @@ internal class RunCommand : CliktCommand(name = "run") {
             badInput("$script is not a Kotlin script: pod run takes a .main.kts file (to send a QGC WPL mission, use 'pod mission upload $script')")
         }
         val choice = fleetChoice()
+        // `--gcs`: every `pod { }` program the script starts serves the ground station's page for its fleet.
+        val page = gcs?.let { at ->
+            GcsWatcher.refusal(at)?.let(::badInput)
+            GcsWatcher(at) { server -> echo("pod: ground station: open ${server.url}", err = true) }
+        }
         val outcome = try {
             withSystemProperties(choice.toSystemProperties()) {
-                ScriptHost(ScriptClasspath.forScripts()).run(
-                    file, scriptArgs,
-                    compiling = { echo("pod: compiling ${file.name} (about 10 s for a new or changed script; later runs start at once)", err = true) },
-                ) { echo(it, err = true) }
+                watchedBy(page) {
+                    ScriptHost(ScriptClasspath.forScripts()).run(
+                        file, scriptArgs,
+                        compiling = { echo("pod: compiling ${file.name} (about 10 s for a new or changed script; later runs start at once)", err = true) },
+                    ) { echo(it, err = true) }
+                }
             }
         } catch (e: Throwable) {
             // The scripting host may let the cancellation through rather than report it.
@@ -118,6 +129,9 @@ private fun tryListening(address: LinkAddress.UdpIn) {
         badInput("cannot listen on ${address.hostAndPort}: ${e.message}")
     }
 }
+
+/** Runs [block] with [watcher] watching the programs it starts, or just runs it when there is none. */
+private fun <T> watchedBy(watcher: FleetWatcher?, block: () -> T): T = if (watcher == null) block() else FleetWatcher.around(watcher, block)
 
 /** Runs [block] with [properties] set, restoring what was there before (tests run `pod` in-process). */
 private inline fun <T> withSystemProperties(properties: Map<String, String>, block: () -> T): T {

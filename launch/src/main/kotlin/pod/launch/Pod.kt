@@ -40,12 +40,27 @@ public fun <T> pod(choice: FleetChoice = FleetChoice.fromSystemProperties(), pri
             // Only the program is cancellable: the fleet and its link must outlive it, to make the
             // vehicles safe once it is cancelled.
             when (choice) {
-                is FleetChoice.Sim -> simulate(List(choice.count) { SimFlavor.ARDUCOPTER }, choice.timeScale, onLine = print, onEvent = madeSafe::note) {
-                    val program = this
-                    Interruption.cancellable { runLocating(program, block) }
-                }.first
+                is FleetChoice.Sim -> {
+                    var watch: FleetWatcher.Watch? = null
+                    val onEvent: (EngineEvent) -> Unit = { e -> madeSafe.note(e); watch?.event(e) }
+                    simulate(List(choice.count) { SimFlavor.ARDUCOPTER }, choice.timeScale, onLine = print, onEvent = onEvent) { sim ->
+                        val program = this
+                        watch = FleetWatcher.installed?.watch(sim.station, choice.timeScale, "${choice.count} simulated copters")
+                        try {
+                            Interruption.cancellable { runLocating(program, block) }
+                        } finally {
+                            watch?.close()
+                        }
+                    }.first
+                }
                 is FleetChoice.Connect -> {
                     val station = GroundStation.open(choice.address, this, signedStation(choice.keyFile))
+                    val watch = try {
+                        FleetWatcher.installed?.watch(station, choice.timeScale, choice.address)
+                    } catch (e: Exception) {
+                        station.close()
+                        throw e
+                    }
                     try {
                         // Against a simulator run faster, the program's durations count in its time.
                         val platform = MavlinkPlatform(station, choice.timeScale)
@@ -60,7 +75,7 @@ public fun <T> pod(choice: FleetChoice = FleetChoice.fromSystemProperties(), pri
                         val waits = launch { showWaits(station, print) }
                         try {
                             val names = { id: Int -> platform.vehicles.value.firstOrNull { it.id == id }?.name ?: "vehicle $id" }
-                            Engine(platform).runShowing(names, onLine = print, onEvent = madeSafe::note) {
+                            Engine(platform).runShowing(names, onLine = print, onEvent = { madeSafe.note(it); watch?.event(it) }) {
                                 val program = this
                                 Interruption.cancellable { runLocating(program, block) }
                             }
@@ -69,6 +84,7 @@ public fun <T> pod(choice: FleetChoice = FleetChoice.fromSystemProperties(), pri
                             waits.cancel()
                         }
                     } finally {
+                        watch?.close()
                         station.close()
                     }
                 }

@@ -75,6 +75,7 @@ public class GcsServer private constructor(
                 }
                 routing {
                     webSocket("/ws") { session.serve(this) }
+                    planRoutes(fleet)
                     staticResources("/", WEB_ROOT)
                 }
             }
