@@ -64,7 +64,7 @@ private val samples: List<Event> = listOf(
     Event.Replaying("flight.tlog", 10.0),
     Event.ReplayDone(records = 5120, logS = 312.5, error = "tlog ends inside the record at byte 9000: it needs 29 bytes, 7 are left", map = null),
     Event.SurveyDone(ok = true, error = null, photos = 16, detections = 8, flagged = listOf(2, 6), backward = listOf(Event.Measured(6, 30.4), Event.Measured(2, null)), map = "pod-survey-map.svg"),
-)
+) + gcsEventSamples + planEventSamples
 
 /** Every `event` name the model knows, read from its serializer (so a new kind must get a sample above). */
 @OptIn(ExperimentalSerializationApi::class)
