@@ -11,7 +11,20 @@ import kotlinx.coroutines.flow.map
 import kotlinx.coroutines.flow.takeWhile
 import kotlinx.coroutines.flow.toList
 import kotlinx.coroutines.withTimeout
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.Job
+import kotlinx.coroutines.SupervisorJob
+import kotlinx.coroutines.cancel
+import kotlinx.coroutines.runBlocking
+import io.kotest.matchers.doubles.plusOrMinus
 import org.openqa.selenium.interactions.Actions
+import pod.cli.gcs.GcsFleet
+import pod.cli.gcs.GcsRequests
+import pod.cli.json.EventJson
+import pod.cli.json.SurveyPath
+import pod.sim.SimFlavor
+import pod.sim.SimPlatform
 import pod.cli.gcs.SurveySimWorld
 import pod.core.units.Location
 import pod.core.units.m
@@ -54,6 +67,7 @@ class GcsSurveySpec : StringSpec({
             state(browser)["phase"] shouldBe "paused"
 
             val resume = click(browser, "resume", "executing")
+            withTimeout(30.seconds) { sim.state.first { it.location.distanceTo(held).meters > 5 } } // it goes on
             browser.awaitTrue("a later waypoint after the resume", 60.seconds) {
                 val s = state(browser)
                 s["pass"] != "forward" || (s["waypoint"] as? Long ?: -1) > pausedAt
@@ -122,12 +136,50 @@ class GcsSurveySpec : StringSpec({
             (start["error"] as String) shouldContain "no survey"
             val unknown = reply("survey_command", "{sysid: 1, command: 'land'}")
             (unknown["error"] as String) shouldContain "not a request"
+            val camera = reply("survey_plan", "{sysid: 1, area: {polygon: [${corners(home)}], height: 20, camera: " +
+                "{sensor_width_mm: 13.2, sensor_height_mm: 8.8, focal_length_mm: 8.8, image_width: 5472, image_height: 3648, front_overlap: 0.7, side_overlap: 0.6}}}")
+            withClue("$camera") { camera["ok"] shouldBe true }
+            // A 1" sensor behind 8.8 mm from 20 m sees 30 m across; 60 % side overlap leaves 12 m between tracks.
+            (EventJson.decode(camera["detail"] as String) as SurveyPath).spacingM shouldBe (12.0 plusOrMinus 1e-6)
             val nobody = reply("survey_plan", "{sysid: 9, area: {polygon: [], height: 20, spacing: 20}}")
             (nobody["error"] as String) shouldContain "no vehicle 9"
         }
     }
+
+    "stopping the ground station's scope leaves a surveying copter holding where it is" {
+        runBlocking {
+            val outer = CoroutineScope(SupervisorJob() + Dispatchers.Default)
+            val sim = SimPlatform.start(outer, List(1) { SimFlavor.ARDUCOPTER }, 10.0, configure = SurveySimWorld.configure())
+            try {
+                val work = CoroutineScope(outer.coroutineContext + SupervisorJob(outer.coroutineContext[Job]))
+                val fleet = GcsFleet(sim.station, work, "1 simulated copter", 10.0)
+                val home = withTimeout(30.seconds) { sim.station.vehicles.first { 1 in it }[1]!!.telemetry.home.filterNotNull().first() }
+                val area = "{\"polygon\": [${corners(home)}], \"height\": 20, \"spacing\": 20}"
+                withTimeout(30.seconds) { GcsRequests.answer(fleet, "{\"op\": \"survey_build\", \"id\": 1, \"sysid\": 1, \"area\": $area}") }.ok shouldBe true
+                withTimeout(30.seconds) { GcsRequests.answer(fleet, "{\"op\": \"survey_command\", \"id\": 2, \"sysid\": 1, \"command\": \"start\"}") }.ok shouldBe true
+                val copter = sim[1]
+                withTimeout(60.seconds) { copter.state.first { it.relativeAltitude.meters > 15 && it.groundSpeed.metersPerSecond > 1 && it.modeName == "GUIDED" } }
+                work.cancel()
+                withTimeout(20.seconds) { copter.state.first { it.modeName == "BRAKE" && it.groundSpeed.metersPerSecond < 0.2 } }
+                val stopped = copter.state.value
+                val drift = withTimeout(20.seconds) {
+                    copter.state.takeWhile { it.time < stopped.time + 10.seconds }
+                        .map { hypot(it.location.distanceTo(stopped.location).meters, (it.location.altitude - stopped.location.altitude).meters) }.toList()
+                }
+                withClue("drift after the scope stopped: $drift") { drift.max() shouldBeLessThanOrEqual 1.0 }
+                copter.state.value.modeName shouldBe "BRAKE"
+            } finally {
+                outer.cancel()
+                sim.close()
+            }
+        }
+    }
 }) {
     private companion object {
+        /** The field's corners as the requests' JSON takes them. */
+        fun corners(home: Location) = listOf(8 to 8, 8 to 58, 58 to 58, 58 to 8)
+            .map { (n, e) -> home.offset(n.m, e.m) }.joinToString(", ") { "{\"lat\": ${it.latitude}, \"lon\": ${it.longitude}}" }
+
         /** Opens the page, waits for vehicle 1 and its home, selects it and zooms in on the field; returns home. */
         suspend fun openOn(gcs: GcsFixture, browser: GcsBrowser): Location {
             browser.open(gcs.url)
