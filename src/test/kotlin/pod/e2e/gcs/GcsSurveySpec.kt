@@ -73,7 +73,7 @@ class GcsSurveySpec : StringSpec({
                 s["pass"] != "forward" || (s["waypoint"] as? Long ?: -1) > pausedAt
             }
             browser.await("a photo with detections on the map", 60.seconds) { browser.findAll("#map circle.survey-photo.detected").firstOrNull() }
-            browser.find("#survey-photos li").text shouldContain "waypoint"
+            (browser.js("return document.querySelector('#survey-photos li').textContent") as String) shouldContain "waypoint"
             browser.screenshot("survey-detections")
             browser.await("the backward route planned", 90.seconds) { browser.findAll("#map polyline.survey-backward.planned").firstOrNull() }
             browser.awaitTrue("a backward waypoint measured", 60.seconds) { browser.findAll("#map circle.survey-revisit.measured").isNotEmpty() }

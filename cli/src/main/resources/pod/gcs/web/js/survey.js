@@ -25,7 +25,7 @@ let rendered = null; // the vehicle whose survey is drawn
 function survey(sysid) {
   let s = surveys.get(sysid);
   if (!s) {
-    s = { state: null, path: null, photos: [], run: 0, backward: null, log: [], history: [] };
+    s = { state: null, path: null, photos: [], run: 0, backward: null, log: [], logged: 0, history: [] };
     surveys.set(sysid, s);
   }
   return s;
@@ -154,20 +154,29 @@ function render() {
   ui.resume.disabled = phase !== "paused";
   ui.abort.disabled = !flying;
   if (!flying) ui.confirm.hidden = true;
-  ui.log.replaceChildren(...(s ? s.log : []).slice(-40).reverse().map((e) => {
-    const li = document.createElement("li");
-    li.textContent = logLine(e);
-    li.dataset.kind = e.event === "survey_command" ? e.command : `report_${e.report}`;
-    li.dataset.eventId = e.event_id;
-    return li;
-  }));
+  // Lists are rebuilt only when they change, so an element a reader holds stays in the page.
+  const logKey = `${sysid}:${s ? s.logged : 0}`;
+  if (ui.log.dataset.key !== logKey) {
+    ui.log.dataset.key = logKey;
+    ui.log.replaceChildren(...(s ? s.log : []).slice(-40).reverse().map((e) => {
+      const li = document.createElement("li");
+      li.textContent = logLine(e);
+      li.dataset.kind = e.event === "survey_command" ? e.command : `report_${e.report}`;
+      li.dataset.eventId = e.event_id;
+      return li;
+    }));
+  }
   const detected = s ? s.photos.filter((p) => p.objects.length) : [];
-  ui.photos.replaceChildren(...detected.map((p) => {
-    const li = document.createElement("li");
-    li.textContent = `waypoint ${p.waypoint}: object${p.objects.length > 1 ? "s" : ""} ${p.objects.join(", ")}`;
-    li.dataset.waypoint = p.waypoint;
-    return li;
-  }));
+  const photoKey = `${sysid}:${s ? s.run : 0}:${detected.length}`;
+  if (ui.photos.dataset.key !== photoKey) {
+    ui.photos.dataset.key = photoKey;
+    ui.photos.replaceChildren(...detected.map((p) => {
+      const li = document.createElement("li");
+      li.textContent = `waypoint ${p.waypoint}: object${p.objects.length > 1 ? "s" : ""} ${p.objects.join(", ")}`;
+      li.dataset.waypoint = p.waypoint;
+      return li;
+    }));
+  }
   const b = s && s.backward;
   ui.backward.textContent = b ? `backward: ${b.order.join(" → ") || "nothing flagged"} (${b.measured.length} of ${b.order.length} measured)` : "";
   if (s && s.path && draft.built) ui.summary.textContent = summary(s.path, `built (event ${s.path.event_id})`);
@@ -207,6 +216,7 @@ function take(e) {
     case "survey_command":
     case "survey_report":
       s.log.push(e);
+      s.logged++;
       if (s.log.length > LOG_MAX) s.log.shift();
       break;
   }
