@@ -16,7 +16,7 @@ public fun interface FeedPart {
         public val TICK: kotlin.time.Duration = 100.milliseconds
 
         /** Every part a page is fed by. */
-        public val ALL: List<FeedPart> = listOf(FleetFeed, LogFeed, QueueFeed, PlanFeed)
+        public val ALL: List<FeedPart> = listOf(FleetFeed, LogFeed, QueueFeed, PlanFeed, SurveyFeed)
     }
 }
 

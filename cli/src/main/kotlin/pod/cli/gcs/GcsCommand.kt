@@ -49,7 +49,7 @@ internal class GcsCommand(private val out: Output) : CliktCommand(name = "gcs") 
 
     override fun run() = runBlocking {
         val work = CoroutineScope(coroutineContext + SupervisorJob(coroutineContext[kotlinx.coroutines.Job]))
-        val simulated = sim?.let { n -> SimPlatform.start(work, List(n) { SimFlavor.ARDUCOPTER }, timeScale) }
+        val simulated = sim?.let { n -> SimPlatform.start(work, List(n) { SimFlavor.ARDUCOPTER }, timeScale, configure = SurveySimWorld.configure()) }
         val station = simulated?.station ?: reportingLinkErrors {
             GroundStation.open(connect, work, signedConfig(signingKey(keyFile)))
         }
