@@ -10,6 +10,7 @@ import com.github.ajalt.clikt.parameters.types.double
 import com.github.ajalt.clikt.parameters.types.int
 import com.github.ajalt.clikt.parameters.types.restrictTo
 import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.Job
 import kotlinx.coroutines.NonCancellable
 import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.awaitCancellation
@@ -48,29 +49,37 @@ internal class GcsCommand(private val out: Output) : CliktCommand(name = "gcs") 
     override fun help(context: Context): String = "The ground station in the browser: the fleet live on a map, with commands, mission queues, surveys and plans."
 
     override fun run() = runBlocking {
-        val work = CoroutineScope(coroutineContext + SupervisorJob(coroutineContext[kotlinx.coroutines.Job]))
-        val simulated = sim?.let { n -> SimPlatform.start(work, List(n) { SimFlavor.ARDUCOPTER }, timeScale, configure = SurveySimWorld.configure()) }
+        // Two scopes: the link (station, simulated vehicles) outlives what the pages started, so
+        // that stopping the pages' work can still tell each vehicle to hold before the link closes.
+        val parent = coroutineContext[Job]
+        val links = CoroutineScope(coroutineContext + SupervisorJob(parent))
+        val pages = CoroutineScope(coroutineContext + SupervisorJob(parent))
+        val simulated = sim?.let { n -> SimPlatform.start(links, List(n) { SimFlavor.ARDUCOPTER }, timeScale, configure = SurveySimWorld.configure()) }
         val station = simulated?.station ?: reportingLinkErrors {
-            GroundStation.open(connect, work, signedConfig(signingKey(keyFile)))
+            GroundStation.open(connect, links, signedConfig(signingKey(keyFile)))
+        }
+        suspend fun closeAll() {
+            if (!pages.stopPageWork()) out.line("some vehicles may not have been told to hold: what the pages started did not stop within 10 s")
+            withContext(NonCancellable) { simulated?.close() ?: station.closeAndAwait() }
+            links.cancel()
         }
         val source = if (sim != null) "$sim simulated copters" else connect
-        val fleet = GcsFleet(station, work, source, timeScale, tiles)
+        val fleet = GcsFleet(station, pages, source, timeScale, tiles)
         val server = try {
             GcsServer.start(fleet, http.host, http.port)
         } catch (e: GcsRequestException) {
-            simulated?.close() ?: station.close()
+            closeAll()
             badInput(e.message!!)
         }
         out.line("pod gcs: $source; open ${server.url}")
         if (server.access.token != null) out.line("the token is in that URL: every request needs it (printed once)")
         try {
-            Interruption.cancellable("stopping what the pages started") { awaitCancellation() }
+            Interruption.cancellable("stopping what the pages started and leaving their vehicles holding") { awaitCancellation() }
         } catch (e: Interrupted) {
             throw CliktError("pod: stopped by ${e.signal}", statusCode = Interruption.EXIT_CODE)
         } finally {
             server.close()
-            work.cancel()
-            withContext(NonCancellable) { simulated?.close() ?: station.closeAndAwait() }
+            closeAll()
         }
     }
 }

@@ -8,6 +8,7 @@ import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.cancel
+import kotlinx.coroutines.runBlocking
 import pod.core.engine.EngineEvent
 import pod.launch.FleetWatcher
 import pod.mavlink.GroundStation
@@ -35,7 +36,8 @@ internal class GcsWatcher(private val address: HttpAddress, private val announce
 
             override fun close() {
                 server.close()
-                scope.cancel()
+                // The program's station closes after this: what a page started holds its vehicle first.
+                runBlocking { scope.stopPageWork() }
             }
         }
     }
