@@ -138,8 +138,12 @@ function drawVehicles() {
     const last = m.track[m.track.length - 1];
     if (!last || Math.hypot(last[0] - w.x, last[1] - w.y) > 0.5) {
       m.track.push([w.x, w.y]);
-      if (m.track.length > TRACK_POINTS) m.track.shift();
-      m.line.setAttribute("points", m.track.map((p) => `${p[0].toFixed(1)},${p[1].toFixed(1)}`).join(" "));
+      // Appended to the polyline's own point list: rewriting its `points` text cost O(track) per
+      // vehicle per batch, the page's whole frame budget at 250 vehicles (BENCHMARKS.md, issue 28).
+      const p = svg.createSVGPoint();
+      p.x = w.x; p.y = w.y;
+      m.line.points.appendItem(p);
+      if (m.track.length > TRACK_POINTS) { m.track.shift(); m.line.points.removeItem(0); }
     }
     const s = toScreen(w.x, w.y);
     m.g.setAttribute("transform", `translate(${s.x.toFixed(1)} ${s.y.toFixed(1)}) rotate(${(t.heading || 0).toFixed(0)})`);
