@@ -14,6 +14,7 @@ import io.ktor.server.websocket.WebSockets
 import io.ktor.server.websocket.webSocket
 import io.ktor.server.websocket.pingPeriod
 import io.ktor.server.websocket.timeout
+import io.ktor.websocket.ChannelOverflow
 import io.ktor.http.HttpHeaders
 import io.ktor.server.request.header
 import io.ktor.server.request.path
@@ -43,6 +44,9 @@ public class GcsServer private constructor(
         /** Where the page's files are on the classpath. */
         public const val WEB_ROOT: String = "pod/gcs/web"
 
+        /** Frames a page's WebSocket holds for a page that is not reading before a send waits. */
+        private const val OUTGOING_FRAMES = 8
+
         /**
          * Serves [fleet] on [host]:[port] (port 0: any free one). A [host] beyond loopback gets a
          * new random token unless [token] is given; on loopback [token] is optional. [limits] bound
@@ -59,6 +63,10 @@ public class GcsServer private constructor(
                     pingPeriod = 15.seconds
                     timeout = 30.seconds
                     maxFrameSize = limits.maxRequestBytes
+                    // Ktor's outgoing channel is unbounded by default: a page that stops reading would
+                    // queue every batch in the server's memory. Bounded, a send waits for the page
+                    // (PageBatcher conflates meanwhile, and gives up after PageLimits.sendTimeout).
+                    channels { outgoing = bounded(OUTGOING_FRAMES, ChannelOverflow.SUSPEND) }
                 }
                 intercept(ApplicationCallPipeline.Plugins) {
                     GcsHeaders.secure(call.response)
