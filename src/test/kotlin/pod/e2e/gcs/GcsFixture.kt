@@ -7,6 +7,7 @@ import kotlinx.coroutines.cancel
 import kotlinx.coroutines.runBlocking
 import pod.cli.gcs.GcsFleet
 import pod.cli.gcs.GcsServer
+import pod.cli.gcs.PageLimits
 import pod.sim.SimFlavor
 import pod.sim.SimPlatform
 import pod.sim.SimVehicleConfig
@@ -37,11 +38,12 @@ internal class GcsFixture private constructor(
             flavors: List<SimFlavor> = List(count) { SimFlavor.ARDUCOPTER },
             configure: (SimVehicleConfig) -> SimVehicleConfig = { it },
             tiles: String? = null,
+            limits: PageLimits = PageLimits(),
         ): GcsFixture {
             val scope = CoroutineScope(SupervisorJob() + Dispatchers.Default)
             val sim = SimPlatform.start(scope, flavors, timeScale, configure = configure)
             val fleet = GcsFleet(sim.station, scope, "${flavors.size} simulated copters", timeScale, tiles)
-            val server = GcsServer.start(fleet, host, 0)
+            val server = GcsServer.start(fleet, host, 0, limits = limits)
             return GcsFixture(scope, sim, fleet, server)
         }
     }

@@ -88,6 +88,7 @@ internal class GcsCommand(private val out: Output) : CliktCommand(name = "gcs") 
 internal data class HttpAddress(val host: String, val port: Int) {
     companion object {
         fun parse(text: String): HttpAddress? {
+            if (':' !in text) return null // "8080" alone is not a host named 8080
             val host = if (text.startsWith("[")) text.substringAfter("[").substringBefore("]") else text.substringBeforeLast(":")
             val port = text.substringAfterLast(":").toIntOrNull()?.takeIf { it in 0..65535 } ?: return null
             if (host.isBlank() || (!text.startsWith("[") && ':' in host)) return null

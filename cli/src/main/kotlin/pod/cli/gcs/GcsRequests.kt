@@ -34,11 +34,14 @@ public object GcsRequests {
      * cancellation still propagates). Errors Pod foresees (a refusal, a lost vehicle, a bad
      * argument) are said in its words; anything else as "internal error".
      */
-    public suspend fun answer(fleet: GcsFleet, text: String): Reply {
+    public suspend fun answer(fleet: GcsFleet, text: String): Reply = answer(text) { it.answer(fleet) }
+
+    /** [answer] with the decoded request carried out by [carryOut] (tests give their own). */
+    internal suspend fun answer(text: String, carryOut: suspend (GcsRequest) -> String?): Reply {
         val id = idOf(text)
         return try {
             val request = decode(text)
-            Reply(request.id, ok = true, detail = request.answer(fleet))
+            Reply(request.id, ok = true, detail = carryOut(request))
         } catch (e: CancellationException) {
             throw e
         } catch (e: GcsRequestException) {

@@ -14,6 +14,7 @@ import io.ktor.server.websocket.WebSockets
 import io.ktor.server.websocket.webSocket
 import io.ktor.server.websocket.pingPeriod
 import io.ktor.server.websocket.timeout
+import io.ktor.websocket.ChannelOverflow
 import io.ktor.http.HttpHeaders
 import io.ktor.server.request.header
 import io.ktor.server.request.path
@@ -43,34 +44,43 @@ public class GcsServer private constructor(
         /** Where the page's files are on the classpath. */
         public const val WEB_ROOT: String = "pod/gcs/web"
 
+        /** Frames a page's WebSocket holds for a page that is not reading before a send waits. */
+        private const val OUTGOING_FRAMES = 8
+
         /**
          * Serves [fleet] on [host]:[port] (port 0: any free one). A [host] beyond loopback gets a
-         * new random token unless [token] is given; on loopback [token] is optional.
+         * new random token unless [token] is given; on loopback [token] is optional. [limits] bound
+         * what each page may cost.
          * @throws GcsRequestException when the address cannot be bound (in use, not this machine's).
          */
-        public suspend fun start(fleet: GcsFleet, host: String = "127.0.0.1", port: Int = 8080, token: String? = null): GcsServer {
+        public suspend fun start(fleet: GcsFleet, host: String = "127.0.0.1", port: Int = 8080, token: String? = null, limits: PageLimits = PageLimits()): GcsServer {
             val loopback = GcsAccess.isLoopbackAddress(host)
             val access = GcsAccess(token ?: if (loopback) null else GcsAccess.newToken(), loopback)
             val stats = GcsStats()
-            val session = PageSession(fleet, stats)
+            val session = PageSession(fleet, stats, limits)
             val server = embeddedServer(CIO, host = host, port = port) {
                 install(WebSockets) {
                     pingPeriod = 15.seconds
                     timeout = 30.seconds
-                    maxFrameSize = MAX_REQUEST_BYTES
+                    maxFrameSize = limits.maxRequestBytes
+                    // Ktor's outgoing channel is unbounded by default: a page that stops reading would
+                    // queue every batch in the server's memory. Bounded, a send waits for the page
+                    // (PageBatcher conflates meanwhile, and gives up after PageLimits.sendTimeout).
+                    channels { outgoing = bounded(OUTGOING_FRAMES, ChannelOverflow.SUSPEND) }
                 }
                 intercept(ApplicationCallPipeline.Plugins) {
+                    GcsHeaders.secure(call.response)
                     val ws = call.request.header(HttpHeaders.Upgrade).equals("websocket", ignoreCase = true)
                     val refused = access.refusal(call.request, ws)
                     if (refused != null) {
-                        call.respondText(refused, status = if (refused.startsWith("cross-origin") || refused.startsWith("this server")) HttpStatusCode.Forbidden else HttpStatusCode.Unauthorized)
+                        call.respondText(refused.reason, status = refused.status)
                         finish()
                         return@intercept
                     }
                     // The page's own files are asked for without the token: it rides in a cookie.
                     val given = call.request.queryParameters["token"]
                     if (access.token != null && given != null && call.request.path() == "/") {
-                        call.response.cookies.append(Cookie(GcsAccess.COOKIE, given, path = "/", httpOnly = true, extensions = mapOf("SameSite" to "Strict")))
+                        call.response.cookies.append(Cookie(access.cookieName, given, path = "/", httpOnly = true, extensions = mapOf("SameSite" to "Strict")))
                     }
                 }
                 routing {
@@ -89,8 +99,5 @@ public class GcsServer private constructor(
             val url = "http://$shown:$bound/" + (access.token?.let { "?token=$it" } ?: "")
             return GcsServer(server, bound, url, access, stats)
         }
-
-        /** The largest request a page may send: a .plan file of a few thousand items fits. */
-        private const val MAX_REQUEST_BYTES = 4L * 1024 * 1024
     }
 }

@@ -10,7 +10,11 @@ import pod.cli.json.Event
  * A page that falls behind loses its oldest events beyond [maxEvents], never the latest states,
  * and is told how many it lost, so a slow browser cannot make the server's memory grow.
  */
-public class PageFeed(private val maxEvents: Int = 5_000) {
+public class PageFeed(
+    private val maxEvents: Int = 5_000,
+    /** Told of each event dropped (the server's count, [GcsStats.eventsDropped]). */
+    private val onDrop: () -> Unit = {},
+) {
     private val events = ArrayDeque<Event>()
     private val states = LinkedHashMap<String, Event>()
     private var dropped = 0L
@@ -21,6 +25,7 @@ public class PageFeed(private val maxEvents: Int = 5_000) {
         if (events.size > maxEvents) {
             events.removeFirst()
             dropped++
+            onDrop()
         }
     }
 

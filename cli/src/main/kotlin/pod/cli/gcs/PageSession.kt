@@ -1,70 +1,52 @@
 package pod.cli.gcs
 
 import io.ktor.server.websocket.DefaultWebSocketServerSession
+import io.ktor.websocket.CloseReason
 import io.ktor.websocket.Frame
-import io.ktor.websocket.readText
-import kotlinx.coroutines.cancelChildren
-import kotlinx.coroutines.coroutineScope
-import kotlinx.coroutines.delay
-import kotlinx.coroutines.launch
+import io.ktor.websocket.close
+import kotlinx.coroutines.cancel
+import kotlinx.coroutines.withTimeoutOrNull
 import pod.cli.json.Event
 import pod.cli.json.EventJson
-import pod.cli.json.GcsBatch
 import pod.cli.json.GcsHello
-import pod.cli.json.Reply
 import java.util.concurrent.atomic.AtomicInteger
+import kotlin.time.Duration.Companion.seconds
 
 /**
- * One open page: its WebSocket gets a [GcsHello], then at most one [GcsBatch] per [FeedPart.TICK]
- * with what every [FeedPart] gathered; each text frame the page sends is a [GcsRequest], answered
- * by a [Reply] in a later batch. Requests run in the fleet's scope: a takeoff asked for goes on
- * when the page is closed, as it would from a terminal.
+ * One open page on its WebSocket: a [GcsHello], then the batches and replies of a
+ * [PageConversation] over the fleet's [FeedPart]s and requests. Beyond [PageLimits.maxPages] pages
+ * a new one is closed with a reason at once; a page that stops reading is closed once a batch has
+ * waited [PageLimits.sendTimeout] for it (it reconnects and starts afresh when it reads again).
  */
-internal class PageSession(private val fleet: GcsFleet, private val stats: GcsStats) {
+internal class PageSession(private val fleet: GcsFleet, private val stats: GcsStats, private val limits: PageLimits) {
+    private val open = AtomicInteger()
 
-    suspend fun serve(ws: DefaultWebSocketServerSession) = coroutineScope {
-        val page = PageFeed()
-        send(ws, GcsHello(fleet.source, fleet.tiles, fleet.timeScale, (1000 / FeedPart.TICK.inWholeMilliseconds).toInt()))
-        FeedPart.ALL.forEach { part -> launch { part.feed(fleet, page) } }
-        launch {
-            var seq = 0L
-            while (true) {
-                delay(FeedPart.TICK)
-                val events = page.drain()
-                if (events.isNotEmpty()) send(ws, GcsBatch(++seq, events))
-            }
+    suspend fun serve(ws: DefaultWebSocketServerSession) {
+        if (open.incrementAndGet() > limits.maxPages) {
+            open.decrementAndGet()
+            ws.close(CloseReason(CloseReason.Codes.TRY_AGAIN_LATER, "too many pages open: at most ${limits.maxPages}"))
+            return
         }
-        val running = AtomicInteger()
+        stats.pageOpened()
         try {
-            for (frame in ws.incoming) {
-                if (frame !is Frame.Text) continue
-                val text = frame.readText()
-                if (running.incrementAndGet() > MAX_RUNNING) {
-                    running.decrementAndGet()
-                    page.add(Reply(GcsRequests.idOf(text), ok = false, error = "busy: $MAX_RUNNING requests of this page are still running"))
-                    continue
-                }
-                fleet.scope.launch {
-                    try {
-                        page.add(GcsRequests.answer(fleet, text))
-                    } finally {
-                        running.decrementAndGet()
-                    }
-                }
-            }
+            val hello = GcsHello(fleet.source, fleet.tiles, fleet.timeScale, (1000 / FeedPart.TICK.inWholeMilliseconds).toInt())
+            val parts = FeedPart.ALL.map { part -> suspend { page: PageFeed -> part.feed(fleet, page) } }
+            PageConversation(fleet.scope, { GcsRequests.answer(fleet, it) }, limits, stats = stats)
+                .run(hello, parts, ws.incoming) { send(ws, it) }
+        } catch (e: PageStalled) {
+            stats.stalled()
+            // The close frame queues behind the batches the page is not reading: try briefly, then drop the connection.
+            withTimeoutOrNull(1.seconds) { ws.close(CloseReason(CloseReason.Codes.TRY_AGAIN_LATER, e.message ?: "stalled")) }
+            ws.cancel()
         } finally {
-            coroutineContext.cancelChildren()
+            open.decrementAndGet()
+            stats.pageClosed()
         }
     }
 
     private suspend fun send(ws: DefaultWebSocketServerSession, event: Event) {
         val bytes = EventJson.encode(event).encodeToByteArray()
         ws.send(Frame.Text(true, bytes))
-        stats.sent(bytes.size)
-    }
-
-    private companion object {
-        /** Requests of one page running at once; more are refused ("busy") rather than queued without bound. */
-        const val MAX_RUNNING = 64
+        stats.sent(event, bytes.size)
     }
 }

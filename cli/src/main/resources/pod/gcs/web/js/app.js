@@ -52,6 +52,8 @@ export const app = {
   },
 };
 window.pod = app;
+// The server keeps the token in a cookie now: take it out of the address bar (history, bookmarks, screenshots).
+if (app.token) history.replaceState(null, "", location.pathname);
 
 function vehicle(sysid) {
   let v = app.vehicles.get(sysid);
