@@ -50,8 +50,33 @@ internal fun GcsBrowser.mapPixel(lat: Double, lon: Double): Pair<Double, Double>
     return xy[0].toDouble() to xy[1].toDouble()
 }
 
+/**
+ * Makes the map show [at] as an operator would before clicking there: when it lies outside the
+ * view (or within 40 px of its edge), zooms out to the vehicles and [at] together. The page fits
+ * its view to the fleet by itself, so a point some way off may not be on screen.
+ */
+internal fun GcsBrowser.bringIntoView(at: Location) {
+    js(
+        """
+        const [lat, lon] = [arguments[0], arguments[1]];
+        const m = window.pod.map, s = m.screen(lat, lon), r = document.getElementById("map").getBoundingClientRect();
+        if (s.x >= 40 && s.y >= 40 && s.x <= r.width - 40 && s.y <= r.height - 40) return;
+        const points = [...window.pod.vehicles.values()].filter((v) => v.telemetry && v.telemetry.lat != null)
+            .map((v) => ({ lat: v.telemetry.lat, lon: v.telemetry.lon }));
+        m.fit(points.concat([{ lat, lon }]));
+        """,
+        at.latitude, at.longitude,
+    )
+}
+
+/** Zooms the map to show every one of [points] (the page's Fit, on given points). */
+internal fun GcsBrowser.fitMap(points: List<Location>) {
+    js("window.pod.map.fit(arguments[0].map((p) => ({ lat: p[0], lon: p[1] })))", points.map { listOf(it.latitude, it.longitude) })
+}
+
 /** Clicks the map where it draws [at]. */
 internal fun GcsBrowser.clickMap(at: Location) {
+    bringIntoView(at)
     val (x, y) = mapPixel(at.latitude, at.longitude)
     val svg = find("#map")
     Actions(driver).moveToElement(svg, offsetX(svg, x), offsetY(svg, y)).click().perform()

@@ -32,6 +32,8 @@ class GcsQueueSpec : StringSpec({
             val centre = gcs.sim[1].offset(north = 0.0, east = 60.0)
             val dragged = 25.0
             browser.find("#queue-panel button[data-queue-tool='circle']").click()
+            // The centre and the end of the drag on screen, as an operator zooms to where they draw.
+            browser.fitMap(listOf(centre, centre.offset(0.m, (2 * dragged).m)))
             browser.dragOnMap(centre, pixels = (dragged * browser.pixelsPerMetre()).toInt())
             browser.await("the circle current on the page") { browser.textOf("#queue-panel .queue-status .current").takeIf { "circle" in it } }
             // The radius as dragged, to the pixel (whole metres: the page rounds it).
