@@ -3,6 +3,7 @@ package pod.e2e.gcs
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.collections.shouldContainAll
 import io.kotest.matchers.longs.shouldBeGreaterThan
+import io.kotest.assertions.withClue
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import kotlinx.coroutines.delay
@@ -33,8 +34,11 @@ class GcsRobustnessSpec : StringSpec({
 
                 page.send("""{"op":"ping","id":4,"pad":"${"x".repeat(100 * 1024)}"}""")
                 val (code, reason) = page.awaitClosed()
-                code shouldBe 1009
-                reason.lowercase() shouldContain "too big"
+                // The server closes with 1009 as soon as it reads the frame's length, leaving the rest
+                // of the frame unread; a socket closed with unread bytes is reset (TCP RST), and a
+                // client that had not yet read the close frame then sees an abnormal close (1006)
+                // instead. Either way the server ended the page (below); the reason, when it arrives, says why.
+                withClue("close $code '$reason'") { ((code == 1009 && "too big" in reason.lowercase()) || code == 1006) shouldBe true }
                 awaitValue<Long>("the page's session to end", 10.seconds) { gcs.server.stats.pagesOpen.takeIf { it == 0L } }
             }
         }

@@ -34,13 +34,16 @@ internal class PageConversation(
         val page = PageFeed(limits.maxEvents, stats::dropped)
         send(hello)
         parts.forEach { part -> launch { part(page) } }
-        launch { PageBatcher(page, tick, limits.sendTimeout, send).run() }
+        val batcher = PageBatcher(page, tick, limits.sendTimeout, send = send)
+        launch { batcher.run() }
         val running = AtomicInteger()
         try {
             for (frame in incoming) {
                 val text = (frame as? Frame.Text)?.readText()
+                val drawn = text?.let(::drawnSeq)
                 when {
                     text == null -> page.add(Reply(-1, ok = false, error = "a request is a JSON text frame, not ${frame.frameType.name.lowercase()}"))
+                    drawn != null -> batcher.drawn(drawn)
                     running.incrementAndGet() > limits.maxRunning -> {
                         running.decrementAndGet()
                         stats.busy()
@@ -60,3 +63,8 @@ internal class PageConversation(
         }
     }
 }
+
+private val DRAWN = Regex("""^\{\s*"drawn"\s*:\s*(\d{1,18})\s*}$""")
+
+/** The batch number of a page's `{"drawn": seq}` (it took in every batch up to seq), null for any other frame. */
+internal fun drawnSeq(text: String): Long? = DRAWN.matchEntire(text)?.groupValues?.get(1)?.toLong()

@@ -119,4 +119,43 @@ class PageBatcherTest : StringSpec({
             sent shouldBe 0
         }
     }
+
+    "a page that says what it drew is paced by it: at most two batches on their way, each with the latest state" {
+        runTest {
+            val page = PageFeed()
+            val sent = ArrayList<GcsBatch>()
+            lateinit var batcher: PageBatcher
+            batcher = PageBatcher(page, tick, 30.seconds) { sent += it as GcsBatch }
+            val running = launch { batcher.run() }
+            page.latest("status:1", state(0))
+            delay(tick + 1.milliseconds)
+            sent.size shouldBe 1
+            batcher.drawn(1) // from now on the page paces its batches
+            // A slow page: it takes in a batch every 500 ms while the state changes every millisecond.
+            val drawing = launch {
+                while (true) {
+                    delay(500)
+                    sent.lastOrNull()?.let { batcher.drawn(it.seq - 1) } // one behind: two in flight at most
+                }
+            }
+            for (i in 1..5_000) {
+                page.latest("status:1", state(i))
+                delay(1)
+                (sent.last().seq - (sent.size - 1).toLong()) shouldBe 1L // numbered without gaps
+            }
+            drawing.cancel()
+            running.cancel()
+            // Five seconds at one batch per 500 ms of drawing, not fifty at one per tick.
+            sent.size shouldBeInRange 10..13
+            sent.drop(1).forEach { it.events.size shouldBe 1 } // one state each: conflated while waiting
+        }
+    }
+
+    "a page's drawn word is read exactly, and anything else is a request" {
+        drawnSeq("""{"drawn":42}""") shouldBe 42L
+        drawnSeq("""{ "drawn" : 7 }""") shouldBe 7L
+        drawnSeq("""{"drawn":-1}""") shouldBe null
+        drawnSeq("""{"op":"ping","id":1}""") shouldBe null
+        drawnSeq("""{"drawn":1,"op":"ping"}""") shouldBe null
+    }
 })

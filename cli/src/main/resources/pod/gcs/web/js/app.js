@@ -107,6 +107,9 @@ function connect() {
       app.stats.lastSeq = e.seq;
       e.events.forEach(take);
       batchListeners.forEach((fn) => fn());
+      // Taken in and drawn: the server sends the next batch only once this page has kept up, so a
+      // slow page gets fewer, fresher batches rather than a backlog (PageBatcher).
+      socket.send(JSON.stringify({ drawn: e.seq }));
     } else {
       take(e);
     }
