@@ -58,4 +58,4 @@ internal class PageBatcher(
 }
 
 /** A page stopped reading what it is sent. */
-internal class PageStalled(message: String) : Exception(message)
+internal class PageStalled(message: String) : pod.core.PodException(message)

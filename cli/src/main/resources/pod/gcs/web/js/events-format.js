@@ -56,10 +56,40 @@ const FORMATS = {
   queue_ended: (e) => ({ text: `queue: ${entry(e.entry)} ended (${e.reason})`, level: e.reason === "cleared" || e.reason === "replaced" ? "warn" : "", vehicles: [e.sysid] }),
   queue_emptied: (e) => ({ text: "queue empty: holding", vehicles: [e.sysid] }),
   queue_done: (e) => ({ text: `queue ${e.action}${e.entry ? `: ${entry(e.entry)}` : ""}`, vehicles: [e.sysid] }),
+  // What the pages did (every page sees every operator's actions) and what came of it.
+  page_action: (e) => ({
+    text: `page: ${e.action}: ${e.outcome}${e.detail ? ` (${e.detail})` : ""}`,
+    level: e.outcome === "failed" ? "bad" : e.outcome === "ok" ? "good" : "",
+    vehicles: [e.sysid],
+  }),
+  plan_transfer: (e) => ({
+    text: `plan ${e.action} ${e.file}: ${e.ok ? `ok (${Object.entries(e.items || {}).map(([k, n]) => `${n} ${k}`).join(", ") || "nothing"})` : `FAILED: ${e.error}`}`,
+    level: e.ok ? "good" : "bad",
+    vehicles: [e.sysid],
+  }),
+  survey_command: (e) => ({
+    text: `survey: operator ${e.command} (event ${e.event_id})${e.accepted ? "" : ` refused: ${e.reason}`}`,
+    level: e.accepted ? "" : "warn",
+    vehicles: [e.sysid],
+  }),
+  survey_report: (e) => ({
+    text: `survey: vehicle reports ${e.report}${e.pass ? ` ${e.pass} pass` : ""}${e.waypoint != null ? `, waypoint ${e.waypoint}` : ""}${e.reason ? `: ${e.reason}` : ""} (event ${e.event_id}${e.counted ? "" : ", older than the last command: ignored"})`,
+    level: e.report === "aborted" ? "bad" : e.report === "finished" ? "good" : "",
+    vehicles: [e.sysid],
+  }),
+  survey_photo: (e) => ({
+    text: `survey photo at waypoint ${e.waypoint}${e.taken ? "" : " NOT taken"}${e.objects.length ? `: detected ${list(e.objects)}` : ""}`,
+    level: e.taken ? "" : "warn",
+    vehicles: [e.sysid],
+  }),
 };
 
 /** Kinds that are states (the latest replaces the last), not happenings: never a log line. */
-const STATES = new Set(["telemetry", "home", "radio", "reply", "gcs_hello", "gcs_batch"]);
+const STATES = new Set([
+  "telemetry", "home", "radio", "reply", "gcs_hello", "gcs_batch",
+  // The panels' own states: the queue's flight, a plan transfer's progress, what is on board, a survey's path and backward route.
+  "queue_flight", "plan_progress", "on_board", "survey_path", "survey_backward",
+]);
 
 /** Whether an event of `kind` is a state rather than a happening: the kinds above and any `…_status` or `…_state` (a panel's own). */
 export function notLogged(kind) {
