@@ -5,8 +5,8 @@
 //
 // `pod run` puts Pod on the classpath; run with plain `kotlin` after `./mvnw install`, the
 // DependsOn lines below find it in ~/.m2 (and then it flies 4 simulated drones in real time).
-@file:DependsOn("pod:pod-launch:0.1.0-SNAPSHOT")
-@file:DependsOn("pod:pod-dsl:0.1.0-SNAPSHOT")
+@file:DependsOn("pod:pod-launch:0.1.0")
+@file:DependsOn("pod:pod-dsl:0.1.0")
 
 import pod.core.units.m
 import pod.dsl.mission

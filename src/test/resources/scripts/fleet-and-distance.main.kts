@@ -1,5 +1,5 @@
 // Runs under `pod run` as it is; with plain kotlin after `./mvnw install`.
-@file:DependsOn("pod:pod-launch:0.1.0-SNAPSHOT")
+@file:DependsOn("pod:pod-launch:0.1.0")
 
 import pod.core.units.Location
 import pod.launch.FleetChoice

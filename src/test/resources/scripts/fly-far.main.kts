@@ -1,6 +1,6 @@
 // A long flight north, for stopping `pod run` while the vehicle flies it (InterruptSpec).
-@file:DependsOn("pod:pod-launch:0.1.0-SNAPSHOT")
-@file:DependsOn("pod:pod-dsl:0.1.0-SNAPSHOT")
+@file:DependsOn("pod:pod-launch:0.1.0")
+@file:DependsOn("pod:pod-dsl:0.1.0")
 
 import kotlinx.coroutines.flow.first
 import pod.core.units.*

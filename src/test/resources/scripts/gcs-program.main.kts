@@ -1,6 +1,6 @@
 // A program that idles long enough for a test to look at the page `pod run --gcs` serves (GcsProgramSpec); stopped by a signal.
-@file:DependsOn("pod:pod-launch:0.1.0-SNAPSHOT")
-@file:DependsOn("pod:pod-dsl:0.1.0-SNAPSHOT")
+@file:DependsOn("pod:pod-launch:0.1.0")
+@file:DependsOn("pod:pod-dsl:0.1.0")
 
 import pod.dsl.*
 import pod.launch.pod

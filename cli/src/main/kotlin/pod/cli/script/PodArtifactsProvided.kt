@@ -11,7 +11,7 @@ import kotlin.script.experimental.dependencies.RepositoryCoordinates
 /**
  * Resolves `@file:DependsOn` as [resolver] does, except Pod's own artifacts (`pod:…`), which
  * `pod run` has already put on the script's classpath. A script written for plain `kotlin`
- * (`@file:DependsOn("pod:pod-dsl:0.1.0-SNAPSHOT")`) thus runs under `pod run` before anything is
+ * (`@file:DependsOn("pod:pod-dsl:0.1.0")`) thus runs under `pod run` before anything is
  * installed, and never mixes an older installed Pod with the one running it.
  */
 internal class PodArtifactsProvided(private val resolver: ExternalDependenciesResolver) : ExternalDependenciesResolver {
