@@ -34,6 +34,7 @@ public data class TrackPoint(
         "$at: ${north.meters.round1()} m N, ${east.meters.round1()} m E, ${up.meters.round1()} m up" +
             if (onGround) " (on the ground)" else ""
 
+    /** Builds points from locations. */
     public companion object {
         /** The point [location] of a track whose home is [home], at [at]. */
         public fun of(at: Duration, location: Location, home: Location, onGround: Boolean): TrackPoint {
