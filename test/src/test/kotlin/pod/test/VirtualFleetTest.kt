@@ -29,11 +29,15 @@ import kotlin.time.Duration.Companion.milliseconds
  */
 class VirtualFleetTest : StringSpec({
 
-    "a copter flies out and back over a link losing 20 % each way: it lands at home, keeps its height out there, and the record shows the loss" {
+    "a copter flies out and back over a link losing 20 % each way: it keeps to its line and its height, lands at home, and the record shows the loss" {
         val record = virtualFleet(seed = 11) { copters(1); loss(20.percent) }.run { outAndBack() }
         val track = record.track(1)
         track should landWithin(2.m, of = track.home)
         track should neverBelow(15.m, fartherThan = 10.m)
+        track should stayInCorridor(track.home, track.home.offset(60.m, 0.m), width = 6.m)
+        // Out along the leg, from 15 m to 45 m north: level at its 20 m.
+        val leg = track.points.filter { it.north.meters in 15.0..45.0 }.let { it.first().at..it.last().at }
+        track should holdAltitude(20.m, tolerance = 1.5.m, during = leg)
         record.events.filterIsInstance<EngineEvent.TaskFailed>() shouldBe emptyList()
         record.events.filterIsInstance<EngineEvent.TaskCompleted>().map { it.label } shouldContain "out and back on [copter-1]"
         record.towardsStation.dropped shouldBeGreaterThan 10
