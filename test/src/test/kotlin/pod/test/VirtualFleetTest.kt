@@ -15,7 +15,9 @@ import io.kotest.property.arbitrary.long
 import io.kotest.property.checkAll
 import pod.core.engine.EngineEvent
 import pod.core.engine.Program
+import pod.core.platform.PlatformVehicle
 import pod.core.units.m
+import pod.core.vehicle.VehicleType
 import pod.dsl.concurrently
 import pod.dsl.mission
 import pod.dsl.on
@@ -43,6 +45,19 @@ class VirtualFleetTest : StringSpec({
         record.towardsStation.dropped shouldBeGreaterThan 10
         record.towardsVehicles.dropped shouldBeGreaterThan 10
         (record.events.last().at <= record.duration) shouldBe true
+    }
+
+    "the issue's fleet, three copters, a plane and a PX4 copter over a link losing 20 %, flies one program: every copter lands home, the plane lands near it" {
+        val record = virtualFleet(seed = 29) { copters(3); plane(1); px4(1); loss(20.percent) }.run {
+            val all = pick { count(5) }.toList()
+            execute(concurrently(all.map { v -> if (v.type == VehicleType.FIXED_WING) circuit(v) on v else hop(v) on v }))
+        }
+        record.events.filterIsInstance<EngineEvent.TaskFailed>() shouldBe emptyList()
+        record.tracks.keys shouldBe setOf(1, 2, 3, 4, 5)
+        for (id in listOf(1, 2, 3, 5)) record.track(id) should landWithin(2.m, of = record.track(id).home)
+        // A plane lands along its approach, beyond the point it aims at.
+        record.track(4) should landWithin(80.m, of = record.track(4).home)
+        record.track(4) should neverBelow(25.m, fartherThan = 300.m)
     }
 
     "the same seed gives the same events at the same virtual times and the same tracks; another seed, with loss on, does not" {
@@ -86,4 +101,20 @@ private suspend fun Program.outAndBack(vehicles: Int = 1) {
         } on v
     }
     execute(if (tasks.size == 1) tasks.single() else concurrently(tasks))
+}
+
+/** A copter's hop: up 15 m, 40 m north, back down home. */
+private fun hop(v: PlatformVehicle) = mission("hop ${v.name}") {
+    home(v.home.value!!)
+    takeOff(15.m)
+    move(north = 40.m)
+    returnHomeAndLand()
+}
+
+/** A plane's circuit: take off, fly 500 m out climbing 20 m, come back over home and land. */
+private fun circuit(v: PlatformVehicle) = mission("circuit ${v.name}") {
+    home(v.home.value!!)
+    takeOff(40.m)
+    move(north = 500.m, up = 20.m)
+    returnHomeAndLand()
 }
