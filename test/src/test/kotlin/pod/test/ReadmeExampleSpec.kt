@@ -37,7 +37,7 @@ class SurveyPropertySpec : StringSpec({
         val fieldCenter = SimVehicleConfig.DEFAULT_HOME.offset(north = 70.m, east = 70.m)
         val polygons = Arb.polygon(fieldCenter, radius = 20.m..45.m, corners = 3..7)
         val pauseTimes = Arb.list(Arb.int(5..60), 0..3) // seconds of flight before each 15 s pause
-        checkAll(PropTestConfig(iterations = 5, seed = 29), polygons, pauseTimes) { field, pauses ->
+        checkAll(PropTestConfig(iterations = 8, seed = 29), polygons, pauseTimes) { field, pauses ->
             val record = virtualFleet(seed = 29) { copters(1) }.run {
                 val drone = pick { count(1) }[0]
                 val control = MissionControl<SurveyPlan>()
