@@ -23,6 +23,7 @@ public class SimFleet private constructor(
         vehicles.forEach { it.stop() }
     }
 
+    /** Starts simulated fleets. */
     public companion object {
         /**
          * Starts [count] vehicles in [scope]: system ids from [firstSystemId], each a copy of [base]

@@ -24,6 +24,7 @@ public value class Distance(
 
     override fun toString(): String = "${meters.format(1)} m"
 
+    /** Distance constants; make distances with [m], [mm] and [km]. */
     public companion object {
         /** Zero metres. */
         public val ZERO: Distance = Distance(0.0)

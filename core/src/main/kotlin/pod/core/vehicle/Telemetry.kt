@@ -90,6 +90,7 @@ public enum class GpsFix {
     PPP,
     ;
 
+    /** Reads fix types as MAVLink numbers them. */
     public companion object {
         /** The fix type numbered [value], or null when GPS_FIX_TYPE has none. */
         public fun of(value: Int): GpsFix? = entries.getOrNull(value)
