@@ -52,7 +52,11 @@ class ApiDocsSpec : StringSpec({
         val source = """
             package planted
 
-            /** A documented class. @property documented what the tag says. */
+            /**
+             * A documented class.
+             *
+             * @property documented what the tag says.
+             */
             public class Documented(public val documented: Int, public val bare: Int, private val hidden: Int) {
                 public fun undocumentedMember(): Unit = Unit
                 override fun toString(): String = "inherits its docs"
@@ -85,7 +89,7 @@ class ApiDocsSpec : StringSpec({
             "val Documented.bare", "fun Documented.undocumentedMember", "fun undocumented", "fun tagsOnly",
             "enum entry Mode.B", "fun Base.forSubclasses", "fun withLocal",
         )
-        found.single { it.what == "fun undocumented" }.toString() shouldBe "Planted.kt:11 fun undocumented"
+        found.single { it.what == "fun undocumented" }.toString() shouldBe "Planted.kt:15 fun undocumented"
     }
 
     "the overview check reports a missing package, an empty overview, a stale one and a missing module section" {

@@ -26,7 +26,7 @@ public sealed class Task {
     /**
      * Fly [queue] on the one vehicle the task is bound to: the vehicle flies the queue's current
      * element while the program (or other tasks) adds, replaces and skips elements. Completes when
-     * the queue runs empty and [whenEmpty] is [WhenEmpty.COMPLETE], the vehicle holding where it is.
+     * the queue runs empty and [whenEmpty] is [pod.core.queue.WhenEmpty.COMPLETE], the vehicle holding where it is.
      */
     public class FlyQueue(
         /** The queue to fly. */
