@@ -24,14 +24,17 @@ class ApiDocsSpec : StringSpec({
     val coverage = KDocCoverage()
     afterSpec { coverage.close() }
 
-    /** Every main Kotlin file of [module] (src/main/kotlin and the generated-source template), parsed. */
-    fun sources(module: String): List<Pair<String, KtFile>> =
-        File("../$module/src/main").walkTopDown().filter { it.isFile && it.extension == "kt" }.sorted()
-            .map { it.invariantSeparatorsPath.removePrefix("../") to coverage.parse(it.name, it.readText()) }
-            .toList()
+    /** Every main Kotlin file of each module (src/main/kotlin and the generated-source template), parsed once. */
+    val sources: Map<String, List<Pair<String, KtFile>>> by lazy {
+        LIBRARY_MODULES.associateWith { module ->
+            File("../$module/src/main").walkTopDown().filter { it.isFile && it.extension == "kt" }.sorted()
+                .map { it.invariantSeparatorsPath.removePrefix("../") to coverage.parse(it.name, it.readText()) }
+                .toList()
+        }
+    }
 
     "every public declaration of core, dsl, mavlink, sim, launch and test has KDoc" {
-        val files = LIBRARY_MODULES.flatMap(::sources)
+        val files = sources.values.flatten()
         files.size shouldBeGreaterThan 300
         files.flatMap { (path, file) -> coverage.syntaxErrors(file, path) }.shouldBeEmpty()
         val missing = files.flatMap { (path, file) -> coverage.undocumented(file, path) }
@@ -40,7 +43,7 @@ class ApiDocsSpec : StringSpec({
 
     "every package with public API has an overview in its module's includes file" {
         val problems = LIBRARY_MODULES.flatMap { module ->
-            val packages = sources(module).map { it.second }.filter(coverage::hasApi).map { it.packageFqName.asString() }.toSet()
+            val packages = sources.getValue(module).map { it.second }.filter(coverage::hasApi).map { it.packageFqName.asString() }.toSet()
             val includes = includesFile(module)
             if (!includes.isFile) listOf("$module: no includes file ${includes.path}")
             else PackageOverviews.problems("pod-$module", includes.readText(), packages)

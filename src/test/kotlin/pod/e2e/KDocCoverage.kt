@@ -63,7 +63,7 @@ class KDocCoverage : AutoCloseable {
      */
     fun syntaxErrors(file: KtFile, path: String): List<String> =
         PsiTreeUtil.findChildrenOfType(file, PsiErrorElement::class.java).filter { PsiTreeUtil.getParentOfType(it, KDoc::class.java) == null }.map { error ->
-            "$path:${file.text.substring(0, error.textOffset).count { it == '\n' } + 1} ${error.errorDescription}"
+            "$path:${lineOf(file, error.textOffset)} ${error.errorDescription}"
         }
 
     /** Whether [file] declares any API at top level (its package then needs an overview). */
@@ -72,9 +72,8 @@ class KDocCoverage : AutoCloseable {
     /** Every API declaration of [file] without KDoc, named by [path] in the result. */
     fun undocumented(file: KtFile, path: String): List<Undocumented> {
         val found = ArrayList<Undocumented>()
-        val text = file.text
         fun report(declaration: KtDeclaration, what: String) {
-            found += Undocumented(path, text.substring(0, declaration.textOffset).count { it == '\n' } + 1, what)
+            found += Undocumented(path, lineOf(file, declaration.textOffset), what)
         }
 
         fun visit(declaration: KtDeclaration, parent: KtClassOrObject?, prefix: String) {
@@ -110,6 +109,9 @@ class KDocCoverage : AutoCloseable {
         return declaration is KtClassOrObject || declaration is KtNamedFunction || declaration is KtProperty ||
             declaration is KtTypeAlias || declaration is KtSecondaryConstructor || declaration is KtParameter
     }
+
+    /** The line (from 1) of [file] that [offset] falls on. */
+    private fun lineOf(file: KtFile, offset: Int): Int = file.text.substring(0, offset).count { it == '\n' } + 1
 
     private fun kind(declaration: KtDeclaration): String = when (declaration) {
         is KtEnumEntry -> "enum entry"

@@ -145,13 +145,13 @@ public sealed class Task {
     public class Action(
         /** A name for events. */
         override val label: String,
-        /** The code. */
+        /** The code to run, with the program as receiver; tasks it executes become this task's children. */
         public val block: suspend Program.() -> Unit,
     ) : Task()
 
     /** Run [task] on [vehicles]: every [Fly] inside it flies on each of them (Dolphin `task @ vehicles`). */
     public class Bound(
-        /** The task. */
+        /** The task to run; its missions fly on each of [vehicles]. */
         public val task: Task,
         /** The vehicles it runs on. */
         public val vehicles: VehicleSet,

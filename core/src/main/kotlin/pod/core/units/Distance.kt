@@ -19,7 +19,7 @@ public value class Distance(
     /** This length scaled by [factor]. */
     public operator fun times(factor: Double): Distance = Distance(meters * factor)
 
-    /** The opposite length. */
+    /** The same length the other way (a negative offset north is one south). */
     public operator fun unaryMinus(): Distance = Distance(-meters)
 
     override fun toString(): String = "${meters.format(1)} m"

@@ -150,6 +150,6 @@ public enum class Severity {
 public data class StatusText(
     /** How serious it is. */
     public val severity: Severity,
-    /** The text. */
+    /** What the autopilot said, in its words; a text it sent in several STATUSTEXT chunks arrives joined. */
     public val text: String,
 )
