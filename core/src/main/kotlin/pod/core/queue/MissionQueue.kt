@@ -242,7 +242,7 @@ public enum class WhenEmpty {
 
 /** The platform cannot fly a mission queue. */
 public class QueueUnsupported(
-    /** The platform. */
+    /** The platform's class name, as the message shows it. */
     public val platform: String,
 ) : PodException("$platform cannot fly a mission queue")
 
