@@ -79,7 +79,7 @@ public class PickBuilder internal constructor() {
         request = request.copy(region = region)
     }
 
-    /** Only vehicles with at least [fraction] (0..1) of their battery left. */
+    /** Only vehicles with at least [atLeast] (0..1) of their battery left. */
     public fun battery(atLeast: Double) {
         require(atLeast in 0.0..1.0) { "pick: battery must be in 0.0..1.0, was $atLeast" }
         request = request.copy(minBattery = atLeast)

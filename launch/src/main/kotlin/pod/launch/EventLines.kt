@@ -41,6 +41,7 @@ public class EventLines(private val names: (Int) -> String) {
         is pod.core.queue.QueueEvent.Emptied -> "$name queue: empty, holding"
     }
 
+    /** The words and numbers event lines are made of, for other printers to reuse. */
     public companion object {
         /** "1 step", "4 steps". */
         public fun steps(count: Int): String = if (count == 1) "1 step" else "$count steps"

@@ -57,6 +57,7 @@ public sealed interface FleetChoice {
                 (if (keyFile == null) emptyMap() else mapOf(KEY_FILE_PROPERTY to keyFile))
     }
 
+    /** The system properties a fleet choice reads. */
     public companion object {
         /** `sim:N` or `connect:ADDRESS`. */
         public const val FLEET_PROPERTY: String = "pod.fleet"

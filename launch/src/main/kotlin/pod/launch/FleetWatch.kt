@@ -23,6 +23,7 @@ public fun interface FleetWatcher {
         public fun event(event: EngineEvent)
     }
 
+    /** Installs the watcher that [pod] programs report to. */
     public companion object {
         @Volatile
         private var current: FleetWatcher? = null

@@ -30,6 +30,7 @@ public class ProgramLocation(
         stackTrace = arrayOf(frame)
     }
 
+    /** Reads the program location off a failure. */
     public companion object {
         /** The location attached to [error] by a `pod { }` program's failure, if any. */
         public fun of(error: Throwable): StackTraceElement? = error.suppressed.firstNotNullOfOrNull { (it as? ProgramLocation)?.frame }

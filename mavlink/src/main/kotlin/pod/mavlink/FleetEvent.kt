@@ -10,7 +10,11 @@ public sealed class FleetEvent {
     /** A vehicle was heard for the first time. */
     public data class Found(override val vehicle: MavlinkVehicle) : FleetEvent()
 
-    /** A vehicle has been silent for [silence], longer than the configured limit. */
+    /**
+     * A vehicle has been silent for [silence], longer than the configured limit.
+     *
+     * @property silence how long nothing has been heard from it when it is declared lost.
+     */
     public data class Lost(override val vehicle: MavlinkVehicle, val silence: Duration) : FleetEvent()
 
     /** A lost vehicle is heard again. */

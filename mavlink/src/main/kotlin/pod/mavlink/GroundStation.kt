@@ -272,6 +272,7 @@ public class GroundStation private constructor(
         .mavlinkVersion(3)
         .build()
 
+    /** Opens ground stations. */
     public companion object {
         /**
          * Opens [connection] (`udpin://0.0.0.0:14550`, `udpout:127.0.0.1:14550`, `tcp://…`) and

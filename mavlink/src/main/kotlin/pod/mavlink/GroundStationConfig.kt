@@ -87,6 +87,7 @@ public data class GroundStationConfig(
     /** [timebase]'s clock. */
     public val clock: TimeSource get() = timebase.clock
 
+    /** The defaults a ground station's configuration starts from. */
     public companion object {
         /**
          * What a mission executor needs: SYS_STATUS, GPS_RAW_INT, MISSION_CURRENT and

@@ -12,6 +12,7 @@ public fun interface LinkOpener {
     /** Opens a link on [address]; throws the link's typed errors (a port in use, an unknown host). */
     public suspend fun open(address: LinkAddress): MavlinkLink
 
+    /** The two ways Pod opens links: real sockets and serial devices, or a memory network. */
     public companion object {
         /** Real sockets and devices (UDP, TCP, serial), as [MavlinkLink.open]. */
         public val Udp: LinkOpener = LinkOpener { MavlinkLink.open(it) }

@@ -6,8 +6,8 @@ import pod.core.units.m
 import pod.mavlink.link.LinkAddress
 
 /**
- * Several [SimVehicle]s with distinct system ids, parked in a row east of [base]'s home so their
- * positions differ.
+ * Several [SimVehicle]s with distinct system ids, parked in a row east of the home of the
+ * configuration they were started from ([start]), so their positions differ.
  */
 public class SimFleet private constructor(
     /** The vehicles, in system-id order. */
@@ -23,6 +23,7 @@ public class SimFleet private constructor(
         vehicles.forEach { it.stop() }
     }
 
+    /** Starts simulated fleets. */
     public companion object {
         /**
          * Starts [count] vehicles in [scope]: system ids from [firstSystemId], each a copy of [base]

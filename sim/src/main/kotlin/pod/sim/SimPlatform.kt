@@ -75,6 +75,7 @@ public class SimPlatform private constructor(
         station.close()
     }
 
+    /** Starts simulated platforms. */
     public companion object {
         /**
          * Starts one vehicle per entry of [flavors] in [scope], system ids from [firstSystemId],

@@ -133,6 +133,7 @@ public data class SimVehicleConfig(
     /** Where it boots: [home], standing on the [terrain] when there is one. */
     internal val bootLocation: Location get() = terrain?.let { home.copy(altitude = it.elevationAt(home)) } ?: home
 
+    /** Defaults of a simulated vehicle that depend on its autopilot and airframe. */
     public companion object {
         /** Near the Faculty of Engineering in Porto, where Dolphin was written. */
         public val DEFAULT_HOME: Location = Location(41.178_046, -8.595_786, 120.m)

@@ -26,7 +26,7 @@ import kotlin.time.Duration
  * pod-dsl gives the same program its Dolphin shape.
  */
 public class Engine(
-    /** The fleet. */
+    /** The fleet programs fly: its vehicles, and how a mission is flown and a vehicle made safe. */
     public val platform: Platform,
     /** How programs run. */
     public val config: EngineConfig = EngineConfig(),

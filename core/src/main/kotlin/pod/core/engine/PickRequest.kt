@@ -59,6 +59,7 @@ public data class PickRequest(
         if (minBattery != null) append(" with battery ≥ ").append((minBattery * 100).toInt()).append('%')
     }
 
+    /** The defaults a pick falls back on. */
     public companion object {
         /** How long a pick waits unless told otherwise. */
         public val DEFAULT_TIMEOUT: Duration = 60.seconds

@@ -26,7 +26,7 @@ public class Program internal constructor(
     private val _picked = MutableStateFlow<Set<Int>>(emptySet())
     private val runner = TaskRunner(engine, this)
 
-    /** The fleet. */
+    /** The fleet this program's engine runs on ([Engine.platform]). */
     public val platform: Platform get() = engine.platform
 
     /** Ids of the vehicles this program holds (picked and not yet released). */

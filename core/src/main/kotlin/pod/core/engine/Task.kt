@@ -26,7 +26,7 @@ public sealed class Task {
     /**
      * Fly [queue] on the one vehicle the task is bound to: the vehicle flies the queue's current
      * element while the program (or other tasks) adds, replaces and skips elements. Completes when
-     * the queue runs empty and [whenEmpty] is [WhenEmpty.COMPLETE], the vehicle holding where it is.
+     * the queue runs empty and [whenEmpty] is [pod.core.queue.WhenEmpty.COMPLETE], the vehicle holding where it is.
      */
     public class FlyQueue(
         /** The queue to fly. */
@@ -145,13 +145,13 @@ public sealed class Task {
     public class Action(
         /** A name for events. */
         override val label: String,
-        /** The code. */
+        /** The code to run, with the program as receiver; tasks it executes become this task's children. */
         public val block: suspend Program.() -> Unit,
     ) : Task()
 
     /** Run [task] on [vehicles]: every [Fly] inside it flies on each of them (Dolphin `task @ vehicles`). */
     public class Bound(
-        /** The task. */
+        /** The task to run; its missions fly on each of [vehicles]. */
         public val task: Task,
         /** The vehicles it runs on. */
         public val vehicles: VehicleSet,

@@ -54,6 +54,7 @@ public class VehicleSet(vehicles: Iterable<PlatformVehicle>) : Iterable<Platform
 
     override fun toString(): String = members.joinToString(prefix = "[", postfix = "]") { it.name }
 
+    /** Ready-made sets. */
     public companion object {
         /** No vehicle. */
         public val EMPTY: VehicleSet = VehicleSet(emptyList())

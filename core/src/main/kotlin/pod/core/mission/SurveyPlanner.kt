@@ -39,15 +39,15 @@ public enum class SurveyDirection(
  *         └───┴──────┴─────┴─────┴──▶ east
  *             0   spacing  2·sp  width (the last gap is clipped)
  * ```
- * - Tracks run parallel to the north–south edges, [length] long; the first lies on the edge
- *   through the start corner, and each next one is [spacing] further across (east or west).
+ * - Tracks run parallel to the north–south edges, `length` long; the first lies on the edge
+ *   through the start corner, and each next one is `spacing` further across (east or west).
  * - There are `ceil(width / spacing) + 1` tracks ([trackCount]); the gap before the last track
  *   is clipped so that it lies exactly on the far edge (every gap is at most `spacing`).
  * - Each track contributes two waypoints (its two ends), so the vehicle flies back and forth and
  *   the crossings between tracks run along the north or south edge. The first waypoint is the
  *   start corner; the last one is on the far edge.
  * - Offsets use [Location.offset] from the start corner (flat Earth, fine for the 50 km the DSL
- *   allows away from the poles); every waypoint is at [height] above home.
+ *   allows away from the poles); every waypoint is at `height` above home.
  */
 public object SurveyPlanner {
     /** Relative slack on `width / spacing` so that rounding noise does not add a needless last track. */

@@ -62,27 +62,43 @@ public enum class SafeState {
 
 /** Something that happened while a vehicle flew a mission. */
 public sealed interface MissionEvent {
-    /** The mission is on board the vehicle ([steps] mission steps). */
+    /**
+     * The mission is on board the vehicle.
+     *
+     * @property steps how many mission steps were uploaded.
+     */
     public data class Uploaded(val steps: Int) : MissionEvent
 
     /**
      * The vehicle, on the ground, was got ready to fly it: [changes] in order, in words ("mode
      * STABILIZE → GUIDED", "armed"), so that no mode change comes as a surprise.
+     *
+     * @property changes what was changed, in order, in words; empty when the vehicle was ready as it was.
      */
     public data class Prepared(val changes: List<String>) : MissionEvent
 
     /** The vehicle started flying it. */
     public data object Started : MissionEvent
 
-    /** The vehicle began mission step [step] (an index into [Mission.steps]). */
+    /**
+     * The vehicle began mission step [step].
+     *
+     * @property step the index of the step in [Mission.steps].
+     */
     public data class StepStarted(val step: Int) : MissionEvent
 
-    /** The vehicle finished mission step [step]. */
+    /**
+     * The vehicle finished mission step [step].
+     *
+     * @property step the index of the step in [Mission.steps].
+     */
     public data class StepDone(val step: Int) : MissionEvent
 
     /**
      * The vehicle is established on the unlimited loiter that ends the mission, step [step]: it
      * circles there until the task is cancelled (a mission ending so never completes).
+     *
+     * @property step the index of the loiter step in [Mission.steps].
      */
     public data class Loitering(val step: Int) : MissionEvent
 

@@ -171,6 +171,7 @@ public data class QueueStatus(
     /** The elements after it, in order. */
     val pending: List<QueueEntry>,
 ) {
+    /** The status every queue starts with. */
     public companion object {
         /** An empty queue. */
         public val EMPTY: QueueStatus = QueueStatus(null, null, emptyList())
@@ -182,10 +183,19 @@ public sealed interface QueueEvent {
     /** When it happened, on the queue's clock. */
     public val at: Duration
 
-    /** [entry] became current. */
+    /**
+     * [entry] became current.
+     *
+     * @property entry the element now flown, with its queue id.
+     */
     public data class Started(val entry: QueueEntry, override val at: Duration) : QueueEvent
 
-    /** [entry] stopped being current, for [reason]. */
+    /**
+     * [entry] stopped being current, for [reason].
+     *
+     * @property entry the element that was flown, with its queue id.
+     * @property reason why it stopped: it arrived, its time ran out, it was skipped, preempted, replaced or cleared.
+     */
     public data class Ended(val entry: QueueEntry, val reason: EndReason, override val at: Duration) : QueueEvent
 
     /** The queue ran empty: the vehicle holds where it is. */
@@ -232,7 +242,7 @@ public enum class WhenEmpty {
 
 /** The platform cannot fly a mission queue. */
 public class QueueUnsupported(
-    /** The platform. */
+    /** The platform's class name, as the message shows it. */
     public val platform: String,
 ) : PodException("$platform cannot fly a mission queue")
 

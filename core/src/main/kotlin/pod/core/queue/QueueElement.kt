@@ -34,13 +34,19 @@ public data class QueueElement(
         limit?.let { append(" for ").append(it) }
     }
 
+    /** The limits every element is checked against when it is made. */
     public companion object {
         /** The highest altitude above home an element may ask for. */
         public const val MAX_ALTITUDE_M: Double = 10_000.0
     }
 }
 
-/** An element in a queue, with the [id] the queue gave it (ids grow and are never reused). */
+/**
+ * An element in a queue, with the [id] the queue gave it.
+ *
+ * @property id the queue's number for the element: ids grow and are never reused, so an id names one insertion.
+ * @property element what is flown.
+ */
 public data class QueueEntry(val id: Long, val element: QueueElement) {
     override fun toString(): String = "#$id $element"
 }

@@ -9,7 +9,13 @@ import pod.core.units.Location
  * mission interface gives them, or a global position (Paparazzi's `_LLA` messages).
  */
 public sealed interface QueuePoint {
-    /** [north] and [east] of the vehicle's home. */
+    /**
+     * [north] and [east] of the vehicle's home.
+     *
+     * @property north how far north of home; negative is south.
+     * @property east how far east of home; negative is west.
+     * @throws IllegalArgumentException when either is not finite or further than [MAX_OFFSET_M] from home.
+     */
     public data class Local(val north: Distance, val east: Distance) : QueuePoint {
         init {
             require(north.meters.isFinite() && east.meters.isFinite()) { "a local point must be finite, was north $north, east $east" }
@@ -21,7 +27,12 @@ public sealed interface QueuePoint {
         override fun toString(): String = "(${north.meters.fmt()} N, ${east.meters.fmt()} E)"
     }
 
-    /** A latitude and longitude; the altitude of [location] is ignored (the element gives it). */
+    /**
+     * A latitude and longitude; the altitude of [location] is ignored (the element gives it).
+     *
+     * @property location the point; only its latitude and longitude count.
+     * @throws IllegalArgumentException when the latitude or longitude is out of range.
+     */
     public data class Global(val location: Location) : QueuePoint {
         init {
             require(location.latitude in -90.0..90.0 && location.longitude in -180.0..180.0) { "a global point needs a valid latitude and longitude, was $location" }
@@ -36,6 +47,7 @@ public sealed interface QueuePoint {
         is Global -> location.copy(altitude = height)
     }
 
+    /** The limit every [Local] point is checked against. */
     public companion object {
         /** How far from home a local point may lie (100 km): further is a typo, not a plan. */
         public const val MAX_OFFSET_M: Double = 100_000.0
@@ -47,12 +59,20 @@ public fun at(north: Distance, east: Distance): QueuePoint = QueuePoint.Local(no
 
 /** A navigation pattern a [QueueElement] flies (Paparazzi's mission elements, and a few more). */
 public sealed interface QueuePattern {
-    /** Fly to [point]; ends there. */
+    /**
+     * Fly to [point]; ends there.
+     *
+     * @property point where to fly.
+     */
     public data class Goto(val point: QueuePoint) : QueuePattern
 
     /**
      * Circle [center] at [radius]: positive turns clockwise (seen from above), negative
      * counter-clockwise. Never ends by itself: give the element a duration or call `next()`.
+     *
+     * @property center the point circled.
+     * @property radius the circle's radius, its sign the direction (positive: clockwise).
+     * @throws IllegalArgumentException when [radius] is zero, not finite or beyond ±[MAX_RADIUS_M].
      */
     public data class Circle(val center: QueuePoint, val radius: Distance) : QueuePattern {
         init {
@@ -64,10 +84,20 @@ public sealed interface QueuePattern {
         val clockwise: Boolean get() = radius.meters > 0
     }
 
-    /** Fly the segment from [from] to [to]: to [from] first, then along the line; ends at [to]. */
+    /**
+     * Fly the segment from [from] to [to]: to [from] first, then along the line; ends at [to].
+     *
+     * @property from where the segment starts (flown to first).
+     * @property to where it ends.
+     */
     public data class Segment(val from: QueuePoint, val to: QueuePoint) : QueuePattern
 
-    /** Fly through [points] in order (a sequence of segments); ends at the last one. */
+    /**
+     * Fly through [points] in order (a sequence of segments); ends at the last one.
+     *
+     * @property points the points, in the order flown.
+     * @throws IllegalArgumentException when [points] is empty or longer than [MAX_PATH_POINTS].
+     */
     public data class Path(val points: List<QueuePoint>) : QueuePattern {
         init {
             require(points.isNotEmpty()) { "a path needs at least one point" }
@@ -79,6 +109,13 @@ public sealed interface QueuePattern {
      * Survey the rectangle [length] × [width] that extends from [start] toward [direction] with
      * tracks at most [spacing] apart (a lawn mower, as `surveyArea` in missions); ends at its last
      * waypoint.
+     *
+     * @property start the corner the survey starts from.
+     * @property length the rectangle's side along the tracks.
+     * @property width the rectangle's side across the tracks.
+     * @property spacing the largest distance between two tracks.
+     * @property direction toward which corner the rectangle extends from [start].
+     * @throws IllegalArgumentException when a side or the spacing is not positive and finite, or a side exceeds [MAX_SURVEY_SIDE_M].
      */
     public data class Survey(
         val start: QueuePoint,
@@ -104,6 +141,7 @@ public sealed interface QueuePattern {
     /** Return to launch by the autopilot's own procedure; ends landed (a plane: circling home). */
     public data object ReturnHome : QueuePattern
 
+    /** The limits patterns are checked against when they are made. */
     public companion object {
         /** The largest circle radius accepted (PX4's MC_ORBIT_RAD_MAX default is 1 km; planes go wider). */
         public const val MAX_RADIUS_M: Double = 10_000.0

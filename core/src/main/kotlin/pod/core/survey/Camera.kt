@@ -73,7 +73,7 @@ public sealed interface SurveySpacing {
      * (1 − [sideOverlap]), trigger distance = footprint along × (1 − [frontOverlap]).
      */
     public data class FromCamera(
-        /** The camera. */
+        /** The camera whose footprint the spacing is computed from. */
         public val camera: Camera,
         /** Height of the camera above the ground it photographs. */
         public val altitudeAboveGround: Distance,

@@ -21,6 +21,7 @@ public class Timebase(
 ) {
     override fun toString(): String = if (this === System) "Timebase.System" else "Timebase($clock, $dispatcher)"
 
+    /** The timebase of a real run; tests make their own from a test scheduler. */
     public companion object {
         /** The monotonic wall clock and [Dispatchers.Default]. */
         public val System: Timebase = Timebase(TimeSource.Monotonic, Dispatchers.Default)

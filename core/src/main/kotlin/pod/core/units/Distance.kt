@@ -19,11 +19,12 @@ public value class Distance(
     /** This length scaled by [factor]. */
     public operator fun times(factor: Double): Distance = Distance(meters * factor)
 
-    /** The opposite length. */
+    /** The same length the other way (a negative offset north is one south). */
     public operator fun unaryMinus(): Distance = Distance(-meters)
 
     override fun toString(): String = "${meters.format(1)} m"
 
+    /** Distance constants; make distances with [m], [mm] and [km]. */
     public companion object {
         /** Zero metres. */
         public val ZERO: Distance = Distance(0.0)

@@ -12,6 +12,7 @@ public value class Speed(
 
     override fun toString(): String = "${metersPerSecond.format(1)} m/s"
 
+    /** Speed constants; make speeds with [mps]. */
     public companion object {
         /** Standing still. */
         public val ZERO: Speed = Speed(0.0)

@@ -90,6 +90,7 @@ public enum class GpsFix {
     PPP,
     ;
 
+    /** Reads fix types as MAVLink numbers them. */
     public companion object {
         /** The fix type numbered [value], or null when GPS_FIX_TYPE has none. */
         public fun of(value: Int): GpsFix? = entries.getOrNull(value)
@@ -149,6 +150,6 @@ public enum class Severity {
 public data class StatusText(
     /** How serious it is. */
     public val severity: Severity,
-    /** The text. */
+    /** What the autopilot said, in its words; a text it sent in several STATUSTEXT chunks arrives joined. */
     public val text: String,
 )

@@ -38,7 +38,7 @@ public object BackwardRoute {
         }
     }
 
-    /** 2-opt on an open route that starts at the origin: reverse route[i..j] while it shortens the route. */
+    /** 2-opt on an open route that starts at the origin: reverse `route[i..j]` while it shortens the route. */
     private fun improve(route: MutableList<Int>, points: List<Pair<Double, Double>>) {
         val origin = 0.0 to 0.0
         fun at(k: Int) = if (k < 0) origin else points[route[k]]

@@ -23,16 +23,30 @@ public sealed interface ControlPhase {
     /** A path is built and can be started, or cancelled. */
     public data object PathBuilt : ControlPhase
 
-    /** Flying [pass], at [waypoint] (index into the pass's waypoints) once known. */
+    /**
+     * Flying [pass], at [waypoint] once known.
+     *
+     * @property pass the pass being flown (forward or backward).
+     * @property waypoint the index into the pass's waypoints of the one flown to, or null until the vehicle reports it.
+     */
     public data class Executing(val pass: Pass, val waypoint: Int? = null) : ControlPhase
 
-    /** Paused in [pass] at [waypoint]: holding position and altitude. */
+    /**
+     * Paused in [pass] at [waypoint]: holding position and altitude.
+     *
+     * @property pass the pass that was being flown.
+     * @property waypoint the index into the pass's waypoints it paused at, or null when it was not known yet.
+     */
     public data class Paused(val pass: Pass, val waypoint: Int? = null) : ControlPhase
 
     /** Both passes flown (or no backward pass needed); the vehicle landed at home. */
     public data object Finished : ControlPhase
 
-    /** Aborted by the operator or by a failure ([reason]): the vehicle holds, then returns home. */
+    /**
+     * Aborted by the operator or by a failure: the vehicle holds, then returns home.
+     *
+     * @property reason why, in words, for the operator.
+     */
     public data class Aborted(val reason: String) : ControlPhase
 }
 
@@ -51,7 +65,11 @@ public sealed interface ControlCommand<out P> {
     /** Grows with every command the operator sends. */
     public val eventId: Long
 
-    /** Build a path: [plan] (a survey of an operator's polygon). */
+    /**
+     * Build a path: [plan] (a survey of an operator's polygon).
+     *
+     * @property plan the path to fly once started.
+     */
     public data class Build<P>(override val eventId: Long, val plan: P) : ControlCommand<P>
 
     /** Drop the built path. */
@@ -78,28 +96,54 @@ public sealed interface ControlReport {
     /** The latest command the flight had applied. */
     public val eventId: Long
 
-    /** Whether a vehicle is ready to fly ([ready]) while nothing is built or flown. */
+    /**
+     * Whether a vehicle is ready to fly while nothing is built or flown.
+     *
+     * @property ready true when a vehicle is heard, initialised and armable.
+     */
     public data class Vehicle(override val eventId: Long, val ready: Boolean) : ControlReport
 
-    /** Flying [pass] at [waypoint]. */
+    /**
+     * Flying [pass] at [waypoint].
+     *
+     * @property pass the pass being flown.
+     * @property waypoint the index into the pass's waypoints of the one flown to, or null before the vehicle reports one.
+     */
     public data class Flying(override val eventId: Long, val pass: Pass, val waypoint: Int?) : ControlReport
 
-    /** Holding in [pass] at [waypoint] after a pause. */
+    /**
+     * Holding in [pass] at [waypoint] after a pause.
+     *
+     * @property pass the pass that was being flown.
+     * @property waypoint the index into the pass's waypoints it holds at, or null when not known.
+     */
     public data class Holding(override val eventId: Long, val pass: Pass, val waypoint: Int?) : ControlReport
 
     /** Done: landed at home. */
     public data class Done(override val eventId: Long) : ControlReport
 
-    /** Stopped for [reason] (an abort carried out, or a failure): holding or returning home. */
+    /**
+     * Stopped (an abort carried out, or a failure): holding or returning home.
+     *
+     * @property reason why, in words, for the operator.
+     */
     public data class Stopped(override val eventId: Long, val reason: String) : ControlReport
 }
 
 /** What a command did. */
 public sealed interface CommandOutcome<out P> {
-    /** Taken: the app now shows [state]. */
+    /**
+     * Taken: the app now shows [state].
+     *
+     * @property state the state right after the command.
+     */
     public data class Accepted<P>(val state: ControlState<P>) : CommandOutcome<P>
 
-    /** Refused for [reason]: nothing changed. */
+    /**
+     * Refused: nothing changed.
+     *
+     * @property reason why the command does not apply in the current phase, in words.
+     */
     public data class Refused(val reason: String) : CommandOutcome<Nothing>
 }
 
@@ -108,5 +152,8 @@ public sealed interface CommandOutcome<out P> {
  * latest command, and the event id of the start command of the flight that state is about
  * ([startedBy], 0 before any): a flight side that missed commands in between (it reads the latest
  * only) still knows whether this is a flight it has not flown yet.
+ *
+ * @property state the app's state right after the latest command.
+ * @property startedBy the event id of the start command of the flight [state] is about, 0 before any start.
  */
 public data class ControlIntent<P>(val state: ControlState<P>, val startedBy: Long)

@@ -70,6 +70,7 @@ public class MissionControl<P>(initial: ControlState<P> = ControlState(ControlPh
         }
     }
 
+    /** Ways to make a controller other than from scratch. */
     public companion object {
         /**
          * A controller for an app that (re)attaches to a flight already under way: it starts from

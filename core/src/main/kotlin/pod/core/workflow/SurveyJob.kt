@@ -105,7 +105,7 @@ public class SurveyJob<F, B>(
 
 /** The platform cannot fly survey workflows. */
 public class SurveyUnsupported(
-    /** The platform. */
+    /** The platform's class name, as the message shows it. */
     public val platform: String,
 ) : PodException("$platform cannot fly a survey workflow")
 

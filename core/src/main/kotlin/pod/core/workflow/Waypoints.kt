@@ -39,7 +39,12 @@ public data class Photo(
     val fileUrl: String,
 )
 
-/** What a forward action says of a waypoint: whether to revisit it ([flagged]) and its [value] (a photo's detections). */
+/**
+ * What a forward action says of a waypoint: whether to revisit it ([flagged]) and its [value] (a photo's detections).
+ *
+ * @property flagged true when the backward pass should visit this waypoint again.
+ * @property value what the action found there, kept in the run's record.
+ */
 public data class Forward<F>(val flagged: Boolean, val value: F)
 
 /** What a failed waypoint action leads to. */
@@ -47,7 +52,12 @@ public sealed interface OnFailure {
     /** Record no result and go on to the next waypoint. */
     public data object Skip : OnFailure
 
-    /** Run the action up to [times] more times, then abort. */
+    /**
+     * Run the action up to [times] more times, then abort.
+     *
+     * @property times how many more tries after the first failure.
+     * @throws IllegalArgumentException when [times] is not in 1..100.
+     */
     public data class Retry(val times: Int) : OnFailure {
         init {
             require(times in 1..100) { "times must be in 1..100, was $times" }
@@ -62,6 +72,14 @@ public sealed interface OnFailure {
  * One waypoint flown: when it was [reached], when the vehicle had stopped and the action [began]
  * (null: no action here), and when it [left] (vehicle time since the flight began), and the
  * action's [result] (null: none or skipped) after [tries].
+ *
+ * @property index the waypoint's index in the list of waypoints the flight was given.
+ * @property point the waypoint, as flown (its altitude a height above home).
+ * @property reached when the vehicle arrived, in vehicle time since the flight began.
+ * @property began when the action started, after the vehicle stopped; null when the waypoint has no action.
+ * @property left when the vehicle flew on.
+ * @property result what the action returned; null when there was no action or a failure was skipped.
+ * @property tries how many times the action ran (0 without an action; more than 1 after retries).
  */
 public data class WaypointRecord<R>(
     val index: Int,
@@ -78,6 +96,9 @@ public data class WaypointRecord<R>(
 /**
  * What a survey workflow recorded: each photo waypoint's forward record, and each flagged one's
  * backward record with its index into the plan, in the order flown.
+ *
+ * @property forward the forward pass's records, one per photo waypoint, in order.
+ * @property backward the backward pass's records, each with the plan index of the flagged waypoint it revisited.
  */
 public data class SurveyRun<F, B>(
     val forward: List<WaypointRecord<Forward<F>>>,

@@ -25,17 +25,31 @@ public data class GeoFeature(
 
 /** The geometry of a [GeoFeature]. */
 public sealed interface GeoShape {
-    /** One place (a home, a rally point). */
+    /**
+     * One place (a home, a rally point).
+     *
+     * @property at the place.
+     */
     public data class Point(val at: Location) : GeoShape
 
-    /** A path (a mission, a flown track); at least 2 points. */
+    /**
+     * A path (a mission, a flown track); at least 2 points.
+     *
+     * @property points the path's points, in order.
+     * @throws IllegalArgumentException when there are fewer than 2 points.
+     */
     public data class Line(val points: List<Location>) : GeoShape {
         init {
             require(points.size >= 2) { "a line needs at least 2 points, was ${points.size}" }
         }
     }
 
-    /** An area (a fence polygon); at least 3 vertices, not closed (the last is not the first). */
+    /**
+     * An area (a fence polygon); at least 3 vertices, not closed (the last is not the first).
+     *
+     * @property vertices the polygon's corners, in order, the first not repeated at the end.
+     * @throws IllegalArgumentException when there are fewer than 3 vertices or the last repeats the first.
+     */
     public data class Polygon(val vertices: List<Location>) : GeoShape {
         init {
             require(vertices.size >= 3) { "a polygon needs at least 3 vertices, was ${vertices.size}" }

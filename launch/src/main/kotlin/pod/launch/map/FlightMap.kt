@@ -111,6 +111,7 @@ public enum class MapFormat(
     KML(listOf("kml")),
     ;
 
+    /** Finds the format a file name asks for. */
     public companion object {
         /** The format [path]'s extension names; throws [MapFormatUnknown] otherwise. */
         public fun of(path: Path): MapFormat {

@@ -58,7 +58,7 @@ public class VehicleActions internal constructor(
      * it armed. A vehicle still initialising (its refusal names the estimator, home, GPS or settling
      * sensors) is asked again every second for up to [ActionTiming.readyTimeout], with [waitingFor] saying
      * why; then [VehicleNotReady]. A refusal waiting cannot clear (battery, mode) fails at once with
-     * the autopilot's reason ([CommandRejected]).
+     * the autopilot's reason ([pod.mavlink.command.CommandRejected]).
      */
     public suspend fun arm(force: Boolean = false): Unit = arming.arm(force)
 

@@ -45,6 +45,7 @@ public class MessageCodec(dialect: io.dronefleet.mavlink.MavlinkDialect = io.dro
     private fun typeOf(messageClass: Class<*>): MessageType = catalog.byClass(messageClass)
         ?: throw IllegalArgumentException("${messageClass.name} is not a message of this codec's dialect")
 
+    /** The codec most callers share. */
     public companion object {
         /** A shared codec for the ArduPilotMega dialect (which includes common and minimal). */
         public val Default: MessageCodec by lazy { MessageCodec() }

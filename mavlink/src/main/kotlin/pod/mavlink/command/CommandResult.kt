@@ -36,6 +36,7 @@ public enum class CommandResult(
     UNSUPPORTED_FRAME(9),
     ;
 
+    /** Reads results as MAVLink numbers them (MAV_RESULT). */
     public companion object {
         /** The result with number [value], or null for a number this dialect does not define. */
         public fun of(value: Int): CommandResult? = entries.firstOrNull { it.mavValue == value }

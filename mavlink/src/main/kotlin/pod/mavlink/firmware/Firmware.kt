@@ -117,6 +117,7 @@ public sealed class Firmware {
     /** The parameter with a plane's cruise airspeed in m/s (ArduPlane 4.5 and later: AIRSPEED_CRUISE). */
     public open val cruiseSpeedParam: String get() = "AIRSPEED_CRUISE"
 
+    /** Finds a vehicle's firmware from what its heartbeat says. */
     public companion object {
         /** The firmware of a vehicle whose heartbeat said [autopilot] flying [type]. */
         public fun of(autopilot: Autopilot, type: VehicleType): Firmware {

@@ -65,6 +65,7 @@ public sealed class LinkAddress {
         override fun toString(): String = "serial://$path:$baud"
     }
 
+    /** Reads connection strings. */
     public companion object {
         private val FORM = Regex("""^(udpin|udpout|udp|tcp)(?::/{2}|:)(\[[^\]]+]|[^:/\[\]]*):(\d{1,5})$""")
 

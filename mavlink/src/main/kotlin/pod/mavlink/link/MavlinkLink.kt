@@ -57,6 +57,7 @@ public interface MavlinkLink {
      */
     public suspend fun awaitClosed() {}
 
+    /** Opens links from addresses or connection strings. */
     public companion object {
         /**
          * Opens a link on [address]: binds or connects now, so a port in use or an unknown host

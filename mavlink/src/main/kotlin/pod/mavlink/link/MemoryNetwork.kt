@@ -161,6 +161,7 @@ public class MemoryNetwork(
         override fun toString(): String = "memory link $address (${local.hostname}:${local.port})"
     }
 
+    /** The limits of a memory network, as a socket's would be. */
     public companion object {
         /** Datagrams a receiver holds before it loses more, as a socket's receive buffer would. */
         public const val RECEIVE_QUEUE: Int = 4096

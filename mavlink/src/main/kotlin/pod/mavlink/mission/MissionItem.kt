@@ -17,6 +17,7 @@ public enum class MissionType(
     RALLY(2),
     ;
 
+    /** Reads mission types as MAVLink numbers them (MAV_MISSION_TYPE). */
     public companion object {
         /** The type with MAV_MISSION_TYPE number [value], or null (255 = ALL is not a list). */
         public fun of(value: Int): MissionType? = entries.firstOrNull { it.mavValue == value }
@@ -66,6 +67,7 @@ public data class MissionItem(
     /** True when [x] and [y] are a latitude and longitude (MAV_FRAME_GLOBAL* and terrain frames). */
     public val isGlobal: Boolean get() = MavFrames.isGlobal(frame)
 
+    /** The MAV_FRAME numbers that decide how an item's x, y and z are read. */
     public companion object {
         /** MAV_FRAME numbers whose x/y are latitude/longitude. */
         public val GLOBAL_FRAMES: Set<Int> = MavFrames.GLOBAL_FRAMES

@@ -54,6 +54,7 @@ public enum class MissionResult(
     OPERATION_CANCELLED(15),
     ;
 
+    /** Reads results as MAVLink numbers them (MAV_MISSION_RESULT). */
     public companion object {
         /** The result with number [value], or null for a number this dialect does not define. */
         public fun of(value: Int): MissionResult? = entries.firstOrNull { it.mavValue == value }

@@ -51,6 +51,7 @@ public enum class ParamType(
     public fun stored(value: Double): Double =
         if (isInteger) kotlin.math.sign(value) * kotlin.math.floor(kotlin.math.abs(value) + 0.5) else value.toFloat().toDouble()
 
+    /** Reads parameter types as MAVLink numbers them (MAV_PARAM_TYPE). */
     public companion object {
         /** The type with number [value], or null for a number MAVLink does not define. */
         public fun of(value: Int): ParamType? = entries.firstOrNull { it.mavValue == value }
@@ -104,6 +105,7 @@ public data class Parameter(
     /** How many parameters the vehicle has. */
     public val count: Int,
 ) {
+    /** What makes a parameter name valid on the wire. */
     public companion object {
         /** The most characters a name has: PARAM_SET and PARAM_VALUE carry it in a char[16]. */
         public const val MAX_NAME_LENGTH: Int = 16

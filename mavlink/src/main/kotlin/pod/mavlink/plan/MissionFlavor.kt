@@ -46,6 +46,7 @@ public enum class MissionFlavor(
     /** True for PX4 flavours. */
     public val isPx4: Boolean get() = this == PX4 || this == PX4_FIXED_WING
 
+    /** Finds the flavour a vehicle's missions take from what its heartbeat says. */
     public companion object {
         /** The flavour of a vehicle with [autopilot] flying [type]; generic autopilots are treated like PX4 (no home item). */
         public fun of(autopilot: Autopilot, type: VehicleType): MissionFlavor = Firmware.of(autopilot, type).missionFlavor

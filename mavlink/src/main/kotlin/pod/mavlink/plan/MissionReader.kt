@@ -75,6 +75,6 @@ public object MissionReader {
 
 /** A mission item Pod cannot read as a mission step ([MissionReader] knows the commands [MissionPlanner] writes). */
 public class UnsupportedMissionItem(
-    /** The item. */
+    /** The item that could not be read, as the vehicle stores it. */
     public val item: MissionItem,
 ) : pod.core.PodException("mission item ${item.seq} (MAV_CMD ${item.command}) is not a step Pod can read")

@@ -67,6 +67,6 @@ public class QueueElementRefused(
     public val systemId: Int,
     /** The element being flown, if any. */
     public val entry: QueueEntry?,
-    /** The refusal. */
+    /** The vehicle's refusal, as the command or action that was refused reported it. */
     override val cause: PodException,
 ) : PodException("vehicle $systemId refused queue element ${entry ?: "(none)"}: ${cause.message}", cause)

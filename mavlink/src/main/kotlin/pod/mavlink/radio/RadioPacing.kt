@@ -58,6 +58,7 @@ public data class RadioPacing(
         }
     }
 
+    /** Pacing switched off. */
     public companion object {
         /** No pacing: reports are still parsed and shown, sends are never delayed. */
         public val Off: RadioPacing = RadioPacing(enabled = false)

@@ -41,6 +41,7 @@ public data class RadioStatus(
     /** A one-line summary for people: `rssi 180/175 noise 40/38 txbuf 93%`. */
     override fun toString(): String = "rssi $rssi/$remrssi noise $noise/$remnoise txbuf $txbuf% (radio $systemId/$componentId)"
 
+    /** The numbers that identify a radio's status report on the link. */
     public companion object {
         /** RADIO_STATUS's message id. */
         public const val MESSAGE_ID: Int = 109

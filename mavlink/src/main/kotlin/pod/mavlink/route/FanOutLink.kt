@@ -88,6 +88,7 @@ public class FanOutLink(
         override fun toString(): String = peer.toString()
     }
 
+    /** The bound on what a fan-out link remembers per peer. */
     public companion object {
         /** Peers whose partial frames are kept; past it the least recently heard one's is dropped. */
         public const val MAX_PEERS: Int = 1024

@@ -185,6 +185,7 @@ public class MavlinkRouter private constructor(
         withTimeoutOrNull(within) { for (port in ports) if (!port.fedFromOutside) port.link.awaitClosed() }
     }
 
+    /** Starts routers. */
     public companion object {
         /**
          * Routes between [links] (at least two) from now on, in [scope]; the router owns the links

@@ -19,7 +19,7 @@ package pod.mavlink.signing
  * minute behind its own timestamp, which it raises to the newest timestamp it verified.
  */
 public class LinkSigning(
-    /** The shared secret. */
+    /** The 32-byte secret both ends share: frames are signed and checked with it. */
     public val key: SigningKey,
     /** Our link id (0..255) in the frames we sign: one per link, so streams never collide. */
     public val linkId: Int = 0,

@@ -25,6 +25,7 @@ public class ReplayGuard {
         return fresh
     }
 
+    /** The window a new signed stream's first timestamp must fall in. */
     public companion object {
         /** How far behind the receiver's time a new stream's first timestamp may be: one minute, in 10 µs units. */
         public const val NEW_STREAM_WINDOW: Long = 6_000_000

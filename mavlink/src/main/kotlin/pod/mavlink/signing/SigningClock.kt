@@ -31,6 +31,7 @@ public class SigningClock(private val epochMillis: () -> Long) {
     @Synchronized
     public fun now(): Long = maxOf(fromEpochMillis(epochMillis()), last)
 
+    /** Converts between Unix time and MAVLink signing timestamps. */
     public companion object {
         /** 2015-01-01 00:00:00 UTC in milliseconds since the Unix epoch. */
         public const val EPOCH_2015_MILLIS: Long = 1_420_070_400_000

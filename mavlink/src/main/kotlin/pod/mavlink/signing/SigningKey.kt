@@ -18,6 +18,7 @@ public class SigningKey(bytes: ByteArray) {
 
     override fun toString(): String = "SigningKey(hidden)"
 
+    /** Makes keys from their written forms. */
     public companion object {
         /** The key's length in bytes (MAVLink 2 signing: a 32-byte secret key). */
         public const val SIZE: Int = 32

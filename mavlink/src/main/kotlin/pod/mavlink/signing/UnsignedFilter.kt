@@ -13,6 +13,7 @@ public fun interface UnsignedFilter {
     /** Whether an unsigned frame of [messageId] from [systemId]/[componentId] is let through. */
     public fun allows(messageId: Int, systemId: Int, componentId: Int): Boolean
 
+    /** The message ids a signed link may accept unsigned. */
     public companion object {
         /** RADIO_STATUS, the radio's link report. */
         public const val RADIO_STATUS: Int = 109

@@ -88,6 +88,7 @@ public class TlogReader(input: InputStream, private val codec: MessageCodec = Me
         return total
     }
 
+    /** Opens tlog files. */
     public companion object {
         /** Opens the tlog at [path]. */
         public fun open(path: Path, codec: MessageCodec = MessageCodec.Default): TlogReader = try {

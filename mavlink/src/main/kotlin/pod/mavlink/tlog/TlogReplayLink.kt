@@ -126,6 +126,7 @@ public class TlogReplayLink private constructor(
         if (idle) reader.close()
     }
 
+    /** Opens replays of tlog files. */
     public companion object {
         /** The one peer every replayed frame comes from. */
         public val RECORDING: LinkPeer = LinkPeer("tlog")

@@ -95,6 +95,7 @@ public class TlogWriter(
         }
     }
 
+    /** Creates tlog files. */
     public companion object {
         private val FLUSH_INTERVAL = 1.seconds
 

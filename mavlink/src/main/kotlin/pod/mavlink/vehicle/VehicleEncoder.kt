@@ -10,7 +10,7 @@ import pod.mavlink.codec.MessageCodec
  * frames expects. Thread-safe.
  */
 public class VehicleEncoder(
-    /** The dialect. */
+    /** Encodes the payloads: the dialect the vehicle speaks. */
     codec: MessageCodec = MessageCodec.Default,
     /** The vehicle's MAVLink system id. */
     public val systemId: Int,

@@ -140,12 +140,26 @@ public class SurveyWorkflow(
 
 /** What a [SurveyWorkflow.flight] tells as it flies. */
 public sealed interface SurveyEvent<out F, out B> {
-    /** Where the flight is now. */
+    /**
+     * Where the flight is now.
+     *
+     * @property progress the pass, the waypoint and whether it holds.
+     */
     public data class Progress(val progress: SurveyProgress) : SurveyEvent<Nothing, Nothing>
 
-    /** The flight is home: what each pass recorded. Always the last event. */
+    /**
+     * The flight is home: what each pass recorded. Always the last event.
+     *
+     * @property run the records of both passes.
+     */
     public data class Finished<F, B>(val run: SurveyRun<F, B>) : SurveyEvent<F, B>
 }
 
-/** Where a [SurveyWorkflow] is: flying (or holding on) [waypoint] of [pass], and whether it holds for a pause. */
+/**
+ * Where a [SurveyWorkflow] is: flying (or holding on) [waypoint] of [pass], and whether it holds for a pause.
+ *
+ * @property pass the pass being flown, or [Pass.HOME] on the way home.
+ * @property waypoint the index of the waypoint flown to in the pass's waypoints, or null when there is none (on the way home).
+ * @property holding true while it holds for a pause.
+ */
 public data class SurveyProgress(val pass: Pass, val waypoint: Int?, val holding: Boolean)

@@ -228,7 +228,7 @@ public class WaypointFlight(
 
 /** Where a [WaypointFlight] stops and what it runs there. */
 public class Stop<R>(
-    /** Whether to stop at waypoint number [index] (from 0). */
+    /** Whether to stop at a waypoint, given its index (from 0). */
     public val at: (index: Int) -> Boolean = { true },
     /** The longest an action may take (vehicle time). */
     public val timeout: Duration = 30.seconds,

@@ -24,6 +24,7 @@ public class FaultConditions(
 
     override fun release(now: Duration): List<TimedDatagram> = model.release(now).map { TimedDatagram(it.at, it.bytes) }
 
+    /** Ways to make fault conditions. */
     public companion object {
         /**
          * The `conditions` of a [pod.mavlink.link.MemoryNetwork] whose datagrams towards a port in

@@ -48,6 +48,7 @@ public data class LinkFaults(
         get() = drop == 0.0 && duplicate == 0.0 && reorder == 0.0 && corrupt == 0.0 &&
             delay == Duration.ZERO && jitter == Duration.ZERO
 
+    /** A fault model with no faults. */
     public companion object {
         /** A perfect link. */
         public val None: LinkFaults = LinkFaults()

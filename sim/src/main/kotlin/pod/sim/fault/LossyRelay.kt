@@ -130,6 +130,7 @@ public class LossyRelay(
         linkB?.close()
     }
 
+    /** Defaults of a relay. */
     public companion object {
         /** Default for [queueCapacity]: a few seconds of a busy fleet's telemetry. */
         public const val DEFAULT_QUEUE_CAPACITY: Int = 4096

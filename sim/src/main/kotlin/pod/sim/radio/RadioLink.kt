@@ -24,7 +24,7 @@ import kotlin.random.Random
  */
 public class RadioLink(
     private val inner: MavlinkLink,
-    /** The radios emulated. */
+    /** The radio pair emulated: its serial rate, buffer size and the link quality it reports. */
     public val radio: SikRadio,
     timebase: Timebase = Timebase.System,
 ) : MavlinkLink {

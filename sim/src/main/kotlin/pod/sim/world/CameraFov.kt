@@ -23,6 +23,7 @@ public data class CameraFov(
         require(vertical.degrees > 0 && vertical.degrees < 180) { "vertical must be in (0°, 180°), was $vertical" }
     }
 
+    /** Fields of view from a camera's sensor and lens. */
     public companion object {
         /** The field of view of a pinhole camera with a [sensorWidth] × [sensorHeight] sensor behind a [focalLength] lens. */
         public fun fromSensor(sensorWidth: Distance, sensorHeight: Distance, focalLength: Distance): CameraFov {

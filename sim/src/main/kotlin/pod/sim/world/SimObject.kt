@@ -20,6 +20,7 @@ public data class SimObject(
     /** What it is, for people reading a report. */
     public val label: String = "object",
 ) {
+    /** Places objects in the simulated world. */
     public companion object {
         /**
          * [count] objects spread uniformly over the disc of [radius] around [center], numbered

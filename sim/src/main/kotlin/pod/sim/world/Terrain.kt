@@ -63,6 +63,7 @@ public data class Terrain(
         return z
     }
 
+    /** Makes terrains. */
     public companion object {
         /**
          * A seeded terrain around [origin]: [hillCount] hills up to [maxHillHeight] high, centred
