@@ -1,0 +1,104 @@
+package pod.e2e.artifacts
+
+import io.kotest.assertions.withClue
+import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.collections.shouldBeEmpty
+import io.kotest.matchers.collections.shouldContainAll
+import io.kotest.matchers.ints.shouldBeGreaterThan
+import io.kotest.matchers.shouldBe
+import io.kotest.matchers.string.shouldContain
+import pod.core.POD_VERSION
+import java.io.File
+import java.nio.file.Files
+import java.util.concurrent.TimeUnit
+
+/**
+ * Pod as a dependency, the way a user's build takes it: the consumer project
+ * (src/test/resources/consumer) imports pod-bom from the installed repository, compiles a program
+ * and a kotest property test written with pod-test, and `mvn verify` builds it; the program then
+ * flies on `simulate`. Every Pod artifact the build used must have come from the installed
+ * repository, none from the local repository Pod's own build installs into.
+ *
+ * One nested Maven run (two Kotlin compiles, one kotest run) and one program run.
+ */
+class ConsumerBuildSpec : StringSpec({
+    val work = Files.createTempDirectory("pod-consumer").toFile()
+    afterSpec { work.deleteRecursively() }
+
+    val project = File(work, "fleet")
+    File("../src/test/resources/consumer").copyRecursively(project)
+    val maven = NestedMaven(work, listOf("pod-repo" to InstalledRepository.dir.toURI().toString()))
+    val build by lazy {
+        maven.run(project, "verify", "-Dpod.version=$POD_VERSION", "-Dpod.repo.url=${InstalledRepository.dir.toURI()}")
+    }
+
+    "the consumer project builds against the installed repository through pod-bom" {
+        withClue({ build.log }) {
+            build.exitCode shouldBe 0
+            build.log shouldContain "BUILD SUCCESS"
+        }
+    }
+
+    "every Pod artifact the consumer used came from the installed repository, at Pod's version" {
+        build.exitCode shouldBe 0
+        val used = File(maven.localRepository, "pod").listFiles()!!.map { it.name }
+        used shouldContainAll listOf("pod-bom", "pod-parent", "pod-core", "pod-dsl", "pod-mavlink", "pod-sim", "pod-launch", "pod-test")
+        val wrong = used.flatMap { artifactId ->
+            val versions = File(maven.localRepository, "pod/$artifactId").listFiles { f -> f.isDirectory }!!.map { it.name }
+            versions.flatMap { version ->
+                val origins = maven.origins(artifactId, version)
+                val problems = mutableListOf<String>()
+                if (version != POD_VERSION) problems += "$artifactId $version is not Pod's version $POD_VERSION"
+                if (origins.isEmpty()) problems += "$artifactId $version has no recorded origin"
+                origins.filterValues { it != "pod-repo" }.forEach { (file, repo) -> problems += "$file came from $repo" }
+                // Byte for byte what the installed repository holds.
+                origins.keys.forEach { name ->
+                    val installed = File(InstalledRepository.versionDir(artifactId, version), name)
+                    val resolved = File(maven.localRepository, "pod/$artifactId/$version/$name")
+                    if (!installed.readBytes().contentEquals(resolved.readBytes())) problems += "$name differs from the installed one"
+                }
+                problems
+            }
+        }
+        withClue(maven.localRepository.path) { wrong.shouldBeEmpty() }
+    }
+
+    "the consumer's kotest property tests written with pod-test ran and passed" {
+        build.exitCode shouldBe 0
+        val specs = File(project, "src/test/kotlin").walk().filter { it.name.endsWith("Spec.kt") }.map { it.nameWithoutExtension }.toList()
+        specs.size shouldBeGreaterThan 0
+        specs.forEach { spec ->
+            val report = File(project, "target/surefire-reports").listFiles { f -> f.name.startsWith("TEST-") && f.name.endsWith(".$spec.xml") }!!
+            withClue("surefire report of $spec") { report.size shouldBe 1 }
+            val suite = Regex("""<testsuite [^>]*""").find(report[0].readText())!!.value
+            fun count(name: String) = Regex("""\b$name="(\d+)"""").find(suite)!!.groupValues[1].toInt()
+            withClue(suite) {
+                count("tests") shouldBeGreaterThan 0
+                count("failures") shouldBe 0
+                count("errors") shouldBe 0
+                count("skipped") shouldBe 0
+            }
+        }
+        File(project, "target/surefire-reports").listFiles()!!.single { it.name == "TEST-example.fleet.HopSpec.xml" }.readText() shouldContain
+            "for any home, height and leg"
+    }
+
+    "the consumer's program flies a mission on simulate" {
+        build.exitCode shouldBe 0
+        val jars = File(project, "target/classpath.txt").readText().trim().split(File.pathSeparator)
+        // The program runs on what the consumer's build resolved, nothing of Pod's own build.
+        jars.filterNot { it.startsWith(maven.localRepository.path + File.separator) }.shouldBeEmpty()
+        val classpath = (listOf(File(project, "target/classes").path) + jars).joinToString(File.pathSeparator)
+        val out = File(work, "program.out")
+        val java = File(System.getProperty("java.home"), "bin/java").path
+        val process = ProcessBuilder(java, "-cp", classpath, "example.fleet.HopKt").redirectErrorStream(true).redirectOutput(out).start()
+        // A bound against a hung child, not a timing assertion.
+        check(process.waitFor(5, TimeUnit.MINUTES)) { process.destroyForcibly(); "the program did not finish" }
+        val lines = out.readLines()
+        withClue(lines.joinToString("\n")) {
+            process.exitValue() shouldBe 0
+            lines.any { Regex("""done\s+hop on \[copter-\d]""").containsMatchIn(it) } shouldBe true
+            lines.last() shouldBe lines.single { Regex("""fleet: copter-\d flew 1 mission\(s\) on simulate""").matches(it) }
+        }
+    }
+})

@@ -1,0 +1,50 @@
+package example.fleet
+
+import io.kotest.core.spec.style.StringSpec
+import io.kotest.matchers.shouldBe
+import io.kotest.property.Arb
+import io.kotest.property.arbitrary.double
+import io.kotest.property.arbitrary.int
+import io.kotest.property.checkAll
+import pod.core.POD_VERSION
+import pod.core.mission.MissionCompletion
+import pod.core.mission.MissionStep
+import pod.core.units.Location
+import pod.core.units.m
+import pod.dsl.mission
+import pod.test.podTestVersion
+
+/**
+ * A user's property tests with kotest and pod-test. (Pod's own README example of pod-test,
+ * ReadmeExampleSpec, is dropped in beside this file: every spec here must run and pass.)
+ */
+class HopSpec : StringSpec({
+    "pod-test comes in the version of the Pod modules it tests" {
+        podTestVersion shouldBe POD_VERSION
+    }
+
+    "for any home, height and leg, the mission takes off first, climbs to the height and ends landed at home" {
+        checkAll(
+            Arb.double(-60.0, 60.0, includeNaNs = false),
+            Arb.double(-170.0, 170.0, includeNaNs = false),
+            Arb.int(5..120),
+            Arb.int(-500..500),
+        ) { latitude, longitude, height, north ->
+            val built = mission("leg") {
+                home(Location(latitude, longitude, 0.m))
+                takeOff(height.m)
+                move(north = north.m)
+                returnHomeAndLand()
+            }
+            (built.steps.first() is MissionStep.TakeOff) shouldBe true
+            (built.steps.first() as MissionStep.TakeOff).location.altitude shouldBe height.m
+            built.completion shouldBe MissionCompletion.LANDED
+        }
+    }
+
+    "the program's hop is the same mission wherever home is" {
+        checkAll(Arb.double(-60.0, 60.0, includeNaNs = false)) { latitude ->
+            hop(Location(latitude, 10.0, 0.m)).steps.size shouldBe hop(Location(0.0, 0.0, 0.m)).steps.size
+        }
+    }
+})
