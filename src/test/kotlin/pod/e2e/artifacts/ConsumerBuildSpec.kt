@@ -3,6 +3,7 @@ package pod.e2e.artifacts
 import io.kotest.assertions.withClue
 import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.collections.shouldBeEmpty
+import io.kotest.matchers.collections.shouldContain
 import io.kotest.matchers.collections.shouldContainAll
 import io.kotest.matchers.ints.shouldBeGreaterThan
 import io.kotest.matchers.shouldBe
@@ -88,6 +89,13 @@ class ConsumerBuildSpec : StringSpec({
         val jars = File(project, "target/classpath.txt").readText().trim().split(File.pathSeparator)
         // The program runs on what the consumer's build resolved, nothing of Pod's own build.
         jars.filterNot { it.startsWith(maven.localRepository.path + File.separator) }.shouldBeEmpty()
+        // pod-bom's platform, not the older Kotlin libraries kotest brings.
+        val platform = InstalledRepository.platformVersions(InstalledRepository.file("pod-bom", POD_VERSION, "pom").readText())
+        val names = jars.map { File(it).name }
+        names shouldContain "kotlin-stdlib-${platform["kotlin.version"]}.jar"
+        names shouldContain "kotlinx-coroutines-core-jvm-${platform["coroutines.version"]}.jar"
+        names shouldContain "kotlinx-serialization-core-jvm-${platform["serialization.version"]}.jar"
+        names shouldContain "kotlinx-io-core-jvm-${platform["kotlinx-io.version"]}.jar"
         val classpath = (listOf(File(project, "target/classes").path) + jars).joinToString(File.pathSeparator)
         val out = File(work, "program.out")
         val java = File(System.getProperty("java.home"), "bin/java").path

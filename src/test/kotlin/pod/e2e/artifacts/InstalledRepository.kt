@@ -11,6 +11,20 @@ internal object InstalledRepository {
     /** The published modules, each in the repository at Pod's version. */
     val published: List<String> = listOf("pod-parent", "pod-bom", "pod-core", "pod-dsl", "pod-mavlink", "pod-sim", "pod-launch", "pod-test")
 
+    /** The version properties of the platform pod-bom pins (Kotlin, coroutines, serialization, kotlinx-io). */
+    val platformProperties: List<String> = listOf("kotlin.version", "coroutines.version", "serialization.version", "kotlinx-io.version")
+
+    /** The values of [platformProperties] in the pom text [pom]. */
+    fun platformVersions(pom: String): Map<String, String?> =
+        platformProperties.associateWith { Regex("<${Regex.escape(it)}>([^<]+)</").find(pom)?.groupValues?.get(1) }
+
+    /** The (groupId, artifactId) pairs that the pom text [pom] manages in its dependencyManagement. */
+    fun managed(pom: String): Set<Pair<String, String>> =
+        Regex("""<dependency>(.*?)</dependency>""", RegexOption.DOT_MATCHES_ALL)
+            .findAll(pom.substringAfter("<dependencyManagement>").substringBefore("</dependencyManagement>"))
+            .map { d -> listOf("groupId", "artifactId").map { Regex("<$it>([^<]+)</$it>").find(d.value)!!.groupValues[1] } }
+            .map { (g, a) -> g to a }.toSet()
+
     /** The repository's directory; fails, saying how to fill it, when the build has not. */
     val dir: File
         get() {

@@ -39,7 +39,7 @@ internal class NestedMaven(private val work: File, private val repositories: Lis
     /** `mvn` with [args] on the project in [project]; the log goes to `work/maven.log` too. */
     fun run(project: File, vararg args: String): Run {
         val home = requireNotNull(System.getProperty("pod.maven.home")) { "pod.maven.home is not set: run under Maven" }
-        val offline = System.getProperty("pod.maven.offline").toBoolean()
+        val offline = System.getProperty("pod.maven.offline") == "offline=true"
         val command = listOf(File(home, "bin/mvn").path, "-B", "-ntp", "-s", settings.path, "-f", File(project, "pom.xml").path) +
             (if (offline) listOf("-o", "-Daether.offline.protocols=file") else emptyList()) +
             listOf("-Dkotlin.compiler.daemon=false") + args
