@@ -14,7 +14,8 @@ import java.io.File
  * is checked by its coordinates), and the ones without a version are managed by pod-bom.
  */
 class ReadmeCoordinatesSpec : StringSpec({
-    val section = File("../README.md").readText().substringAfter("\n## Use Pod in your build\n").substringBefore("\n## ")
+    // Up to the next section, or the API reference subsection (another part's text).
+    val section = File("../README.md").readText().substringAfter("\n## Use Pod in your build\n").substringBefore("\n## ").substringBefore("\n### API reference")
     fun block(language: String) = Regex("""```$language\n(.*?)\n```""", RegexOption.DOT_MATCHES_ALL).findAll(section).map { it.groupValues[1] }.toList()
 
     /** A coordinate as written: artifactId and version (null: managed by the BOM). */
@@ -41,6 +42,8 @@ class ReadmeCoordinatesSpec : StringSpec({
         maven.map { it.artifactId } shouldContainExactlyInAnyOrder gradle.map { it.artifactId }
         (maven + gradle).filter { it.version != null }.map { it.artifactId to it.version }.toSet() shouldBe setOf("pod-bom" to POD_VERSION)
         maven.single { it.artifactId == "pod-bom" }.type shouldBe "pom"
+        // The prose names the same version: the only x.y.z version in the section is Pod's.
+        Regex("""(?<![\d.])\d+\.\d+\.\d+(?![\d.])""").findAll(section).map { it.value }.toSet() shouldBe setOf(POD_VERSION)
     }
 
     "every coordinate in the README is in the installed repository at Pod's version" {
