@@ -5,6 +5,7 @@ import io.kotest.core.spec.style.StringSpec
 import io.kotest.matchers.collections.shouldHaveSize
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
+import io.kotest.matchers.string.shouldMatch
 import io.kotest.matchers.string.shouldNotContain
 import io.kotest.matchers.string.shouldStartWith
 import io.kotest.matchers.types.shouldBeInstanceOf
@@ -13,6 +14,7 @@ import kotlinx.coroutines.runInterruptible
 import kotlinx.coroutines.withTimeout
 import pod.cli.Output
 import pod.cli.json.Event
+import pod.core.POD_VERSION
 import java.io.File
 import java.net.DatagramSocket
 import java.net.InetAddress
@@ -25,6 +27,12 @@ import pod.cli.run as runPod
 /** What one `pod` run printed and how it ended. */
 internal class Ran(val code: Int, val out: List<String>, val err: List<String>) {
     val text: String get() = (out + err).joinToString("\n")
+
+    /** With `--json`: the lines after the first, which must be Pod's version ([Event.PodVersion]). */
+    val afterVersion: List<String> get() {
+        withClue(text) { decodeEvent(out.first()) shouldBe Event.PodVersion(POD_VERSION) }
+        return out.drop(1)
+    }
 }
 
 /**
@@ -236,13 +244,20 @@ class BadInputSpec : StringSpec({
         }
     }
 
-    "with --json a bad input is also an error event on stdout, the only line there" {
+    "with --json a bad input is also an error event on stdout, the only line there after Pod's version" {
         val ran = pod("param", "set", "THIS_NAME_IS_WAY_TOO_LONG_FOR_MAVLINK", "1", "--json", *link())
         ran.code shouldBe 2
         ran.err shouldHaveSize 1
-        val event = decodeEvent(ran.out.single()).shouldBeInstanceOf<Event.Error>()
+        val event = decodeEvent(ran.afterVersion.single()).shouldBeInstanceOf<Event.Error>()
         event.message shouldContain "THIS_NAME_IS_WAY_TOO_LONG_FOR_MAVLINK"
         ran.err.single() shouldBe "error: ${event.message}"
+    }
+
+    "pod --version says Pod's version, the one every --json run starts with" {
+        val ran = pod("--version")
+        ran.code shouldBe 0
+        ran.out shouldBe listOf("pod $POD_VERSION")
+        POD_VERSION shouldMatch Regex("""0\.\d+\.\d+""")
     }
 
     "a tlog with no record at all is bad input, exit 2, whether it is to be mapped or played" {

@@ -74,7 +74,7 @@ class QueueCliSpec : StringSpec({
                 suspend fun queue(vararg args: String): Event {
                     val ran = pod("queue", *args, "--control", control, "--json")
                     withClue(ran.text) { ran.code shouldBe 0 }
-                    return decodeEvent(ran.out.single())
+                    return decodeEvent(ran.afterVersion.single())
                 }
 
                 val serving = awaitServed(Event.QueueServing::class.java, 90.seconds)
@@ -237,7 +237,7 @@ class QueueCliSpec : StringSpec({
         val ran = pod("queue", "status", "--control", "127.0.0.1:${freeTcpPort()}", "--json")
         ran.code shouldBe 2
         ran.err.single() shouldContain "no `pod queue serve` answers on 127.0.0.1:"
-        decodeEvent(ran.out.single()).shouldBeInstanceOf<Event.Error>().message shouldContain "start one with `pod queue serve --connect LINK`"
+        decodeEvent(ran.afterVersion.single()).shouldBeInstanceOf<Event.Error>().message shouldContain "start one with `pod queue serve --connect LINK`"
     }
 
     "serve refuses a control port already taken, with exit 2, before it looks for a vehicle" {

@@ -5,6 +5,7 @@ import io.kotest.matchers.collections.shouldContainInOrder
 import io.kotest.matchers.doubles.shouldBeGreaterThan
 import io.kotest.matchers.comparables.shouldBeLessThan
 import io.kotest.matchers.doubles.shouldBeLessThan
+import io.kotest.matchers.should
 import io.kotest.matchers.shouldBe
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.async
@@ -30,6 +31,9 @@ import pod.mavlink.queue.QueueFlight
 import pod.sim.SimVehicle
 import pod.sim.SimVehicleConfig
 import pod.sim.fault.LinkFaults
+import pod.test.Turn
+import pod.test.circleAround
+import pod.test.stayInCorridor
 import kotlin.math.abs
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
@@ -127,8 +131,7 @@ internal suspend fun CoroutineScope.scenario(flavour: Flavour, v: MavlinkVehicle
     // The circle: once on it, inside the corridor, counter-clockwise, until its 60 s ran out.
     val onCircle = track.between(circleStart, circleEnd.at).dropWhile { abs(it.distanceTo(center.first, center.second) - radius) > flavour.corridor / 2 }
     onCircle.forEach { abs(it.distanceTo(center.first, center.second) - radius) shouldBeLessThan flavour.corridor }
-    (onCircle.signedArea(center) > 0) shouldBe true // counter-clockwise seen from above
-    onCircle.degreesAround(center) shouldBeGreaterThan (if (k > 1) 180.0 else 300.0)
+    onCircle.asTrack(home) should circleAround(home.offset(center.first.m, center.second.m), Turn.COUNTER_CLOCKWISE, turns = (if (k > 1) 180.0 else 300.0) / 360)
     // Its duration honoured at the vehicle: still circling 2 s before the end, heading away within 2 s after.
     val justBefore = track.between(circleEnd.at - 2.seconds, circleEnd.at - 1.seconds).first()
     abs(justBefore.distanceTo(center.first, center.second) - radius) shouldBeLessThan flavour.corridor
@@ -146,7 +149,7 @@ internal suspend fun CoroutineScope.scenario(flavour: Flavour, v: MavlinkVehicle
         .dropWhile { it.offSegment(from, to) > flavour.corridor / 2 }
     onSegment.isNotEmpty() shouldBe true
     onSegment.first().distanceTo(to.first, to.second) shouldBeGreaterThan 0.6 * kotlin.math.hypot(to.first - from.first, to.second - from.second)
-    onSegment.forEach { it.offSegment(from, to) shouldBeLessThan flavour.corridor }
+    onSegment.asTrack(home) should stayInCorridor(home.offset(from.first.m, from.second.m), home.offset(to.first.m, to.second.m), width = (2 * flavour.corridor).m)
 
     // The path: its first three points in order, then no further after next().
     val flownPath = track.between(pathStart, skippedAt)

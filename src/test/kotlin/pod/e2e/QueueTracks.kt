@@ -6,9 +6,8 @@ import kotlinx.coroutines.delay
 import kotlinx.coroutines.launch
 import pod.core.queue.MissionQueue
 import pod.core.units.Location
+import pod.core.units.m
 import pod.sim.SimVehicle
-import kotlin.math.abs
-import kotlin.math.atan2
 import kotlin.math.hypot
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
@@ -50,23 +49,8 @@ internal fun TrackPoint.offSegment(a: Pair<Double, Double>, b: Pair<Double, Doub
 }
 
 /**
- * Twice the signed area swept around [center] by these points (east as x, north as y): positive
- * counter-clockwise seen from above, negative clockwise.
+ * These samples as a pod-test track from [home], for pod-test's track matchers (their failures say
+ * where and when a rule broke).
  */
-internal fun List<TrackPoint>.signedArea(center: Pair<Double, Double>): Double =
-    zipWithNext().sumOf { (p, q) ->
-        val x1 = p.east - center.second
-        val y1 = p.north - center.first
-        val x2 = q.east - center.second
-        val y2 = q.north - center.first
-        x1 * y2 - x2 * y1
-    }
-
-/** Degrees swept around [center] by these points (absolute, summed step by step). */
-internal fun List<TrackPoint>.degreesAround(center: Pair<Double, Double>): Double =
-    zipWithNext().sumOf { (p, q) ->
-        var d = Math.toDegrees(atan2(q.east - center.second, q.north - center.first) - atan2(p.east - center.second, p.north - center.first))
-        if (d > 180) d -= 360
-        if (d < -180) d += 360
-        abs(d)
-    }
+internal fun List<TrackPoint>.asTrack(home: Location): pod.test.Track =
+    pod.test.Track(0, "the vehicle", home, map { pod.test.TrackPoint.of(it.at, home.offset(it.north.m, it.east.m, it.height.m), home, onGround = false) })

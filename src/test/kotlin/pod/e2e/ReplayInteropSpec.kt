@@ -124,7 +124,7 @@ class ReplayInteropSpec : StringSpec({
 
         val replay = pod("replay", mavproxyLog.path, "--speed", "20", "--json", within = 2.minutes)
         replay.code shouldBe 0
-        val events = replay.out.map(EventJson::decode)
+        val events = replay.afterVersion.map(EventJson::decode)
         events.first() shouldBe Event.Replaying(mavproxyLog.path, 20.0)
         // MAVProxy's and Pod's station heartbeats are in the log too: neither is a vehicle.
         events.filterIsInstance<Event.Found>().map { it.sysid } shouldBe listOf(41)

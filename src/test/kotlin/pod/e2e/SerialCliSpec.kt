@@ -11,6 +11,7 @@ import kotlinx.coroutines.runInterruptible
 import kotlinx.coroutines.withTimeout
 import pod.cli.Output
 import pod.cli.json.Event
+import pod.core.POD_VERSION
 import pod.mavlink.GroundStation
 import pod.sim.SimVehicle
 import pod.sim.SimVehicleConfig
@@ -52,7 +53,7 @@ class SerialCliSpec : StringSpec({
                     }
                     withTimeout(20.seconds) { out.eventsOf<Event.Found>().first() }.sysid shouldBe 43
                     withTimeout(20.seconds) { watching.await() } shouldBe 0
-                    out.events.first() shouldBe Event.Listening("serial://${pair.a}:57600", 0)
+                    out.events.take(2) shouldBe listOf(Event.PodVersion(POD_VERSION), Event.Listening("serial://${pair.a}:57600", 0))
                 } finally {
                     sim.stop()
                 }

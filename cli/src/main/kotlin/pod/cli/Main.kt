@@ -6,6 +6,8 @@ import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.core.parse
 import com.github.ajalt.clikt.core.subcommands
 import com.github.ajalt.clikt.output.MordantHelpFormatter
+import com.github.ajalt.clikt.parameters.options.versionOption
+import pod.core.POD_VERSION
 import pod.cli.json.Event
 import pod.cli.json.EventJson
 import pod.launch.Interruption
@@ -22,6 +24,7 @@ class Pod(out: Output = TerminalOutput.standard()) : CliktCommand(name = "pod") 
     init {
         // Every option's help says its default; subcommands inherit the formatter from this context.
         configureContext { helpFormatter = { MordantHelpFormatter(it, showDefaultValues = true) } }
+        versionOption(POD_VERSION, message = { "pod $it" })
         subcommands(listOf(SimCommand(out), WatchCommand(out), ReplayCommand(out), DemoCommand(out), MapCommand(out), SurveyCommand(out), RunCommand(), MissionGroup(out), ParamGroup(out), pod.cli.queue.QueueGroup(out), SigningGroup(out)) + actionCommands(out))
         subcommands(RouteCommand(out))
         subcommands(pod.cli.gcs.GcsCommand(out))
@@ -76,6 +79,8 @@ fun run(
     var internal = false
     val errLine = Output { line -> if (said == null) said = line; err.line(line) }
     val code = try {
+        // The version leads a --json run's lines, before anything a command prints (Event.PodVersion).
+        if (json) out.line(EventJson.encode(Event.PodVersion(POD_VERSION)))
         val pod = Pod(out)
         try {
             pod.parse(args)

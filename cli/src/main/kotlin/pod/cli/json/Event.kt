@@ -16,6 +16,13 @@ import pod.cli.queue.EntryJson
 @Serializable
 public sealed interface Event {
 
+    /**
+     * The first line of every `pod … --json` run: the [version] of Pod printing it
+     * ([pod.core.POD_VERSION]), so a reader knows which model the lines that follow are in.
+     */
+    @Serializable @SerialName("pod")
+    public data class PodVersion(val version: String) : Event
+
     // ---- pod watch, pod demo: the fleet on a link ----
 
     /**

@@ -25,6 +25,7 @@ private val gotoEntry = EntryJson(1, ElementJson(PatternJson.Goto(PointJson.Glob
 
 /** One event of every kind `pod … --json` prints, with every field set where it can be. */
 private val samples: List<Event> = listOf(
+    Event.PodVersion("0.1.0"),
     Event.Listening("udpin://0.0.0.0:14550", 14550),
     Event.Found(42, 1, "QUADROTOR", "ARDUPILOT"),
     Event.Lost(42, 1, "QUADROTOR", "ARDUPILOT", silenceMs = 3012),
