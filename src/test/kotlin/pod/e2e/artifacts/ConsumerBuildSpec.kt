@@ -9,6 +9,7 @@ import io.kotest.matchers.ints.shouldBeGreaterThan
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import pod.core.POD_VERSION
+import pod.e2e.MarkdownKotlin
 import java.io.File
 import java.nio.file.Files
 import java.util.concurrent.TimeUnit
@@ -16,7 +17,8 @@ import java.util.concurrent.TimeUnit
 /**
  * Pod as a dependency, the way a user's build takes it: the consumer project
  * (src/test/resources/consumer) imports pod-bom from the installed repository, compiles a program
- * and a kotest property test written with pod-test, and `mvn verify` builds it; the program then
+ * and kotest property tests written with pod-test (its own, and the README's pod-test example copied
+ * in as a reader would), and `mvn verify` builds it; the program then
  * flies on `simulate`. Every Pod artifact the build used must have come from the installed
  * repository, none from the local repository Pod's own build installs into.
  *
@@ -28,6 +30,9 @@ class ConsumerBuildSpec : StringSpec({
 
     val project = File(work, "fleet")
     File("../src/test/resources/consumer").copyRecursively(project)
+    // The README's pod-test example, as a reader copies it into their project.
+    val example = MarkdownKotlin.blocks(File("../README.md")).single { block -> block.code.any { Regex("""^class \w+Spec\b""").containsMatchIn(it) } }
+    File(project, "src/test/kotlin/ReadmeExample.kt").writeText(example.code.joinToString("\n", postfix = "\n"))
     val maven = NestedMaven(work, listOf("pod-repo" to InstalledRepository.dir.toURI().toString()))
     val build by lazy {
         maven.run(project, "verify", "-Dpod.version=$POD_VERSION", "-Dpod.repo.url=${InstalledRepository.dir.toURI()}")
@@ -64,14 +69,19 @@ class ConsumerBuildSpec : StringSpec({
         withClue(maven.localRepository.path) { wrong.shouldBeEmpty() }
     }
 
-    "the consumer's kotest property tests written with pod-test ran and passed" {
+    "the consumer's kotest property tests written with pod-test, the README's example among them, ran and passed" {
         build.exitCode shouldBe 0
-        val specs = File(project, "src/test/kotlin").walk().filter { it.name.endsWith("Spec.kt") }.map { it.nameWithoutExtension }.toList()
-        specs.size shouldBeGreaterThan 0
+        // Every spec class of the project's tests, by its qualified name (the package line, if any, and the class).
+        val specs = File(project, "src/test/kotlin").walk().filter { it.name.endsWith(".kt") }.flatMap { file ->
+            val text = file.readText()
+            val prefix = Regex("""^package ([\w.]+)""", RegexOption.MULTILINE).find(text)?.let { it.groupValues[1] + "." }.orEmpty()
+            Regex("""^class (\w+Spec)\b""", RegexOption.MULTILINE).findAll(text).map { prefix + it.groupValues[1] }
+        }.toList()
+        specs shouldContainAll listOf("example.fleet.HopSpec", "SurveyPropertySpec")
         specs.forEach { spec ->
-            val report = File(project, "target/surefire-reports").listFiles { f -> f.name.startsWith("TEST-") && f.name.endsWith(".$spec.xml") }!!
-            withClue("surefire report of $spec") { report.size shouldBe 1 }
-            val suite = Regex("""<testsuite [^>]*""").find(report[0].readText())!!.value
+            val report = File(project, "target/surefire-reports/TEST-$spec.xml")
+            withClue("surefire report of $spec") { report.isFile shouldBe true }
+            val suite = Regex("""<testsuite [^>]*""").find(report.readText())!!.value
             fun count(name: String) = Regex("""\b$name="(\d+)"""").find(suite)!!.groupValues[1].toInt()
             withClue(suite) {
                 count("tests") shouldBeGreaterThan 0
@@ -80,8 +90,7 @@ class ConsumerBuildSpec : StringSpec({
                 count("skipped") shouldBe 0
             }
         }
-        File(project, "target/surefire-reports").listFiles()!!.single { it.name == "TEST-example.fleet.HopSpec.xml" }.readText() shouldContain
-            "for any home, height and leg"
+        File(project, "target/surefire-reports/TEST-example.fleet.HopSpec.xml").readText() shouldContain "for any home, height and leg"
     }
 
     "the consumer's program flies a mission on simulate" {

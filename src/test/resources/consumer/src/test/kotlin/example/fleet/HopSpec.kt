@@ -15,8 +15,8 @@ import pod.dsl.mission
 import pod.test.podTestVersion
 
 /**
- * A user's property tests with kotest and pod-test. (Pod's own README example of pod-test,
- * ReadmeExampleSpec, is dropped in beside this file: every spec here must run and pass.)
+ * A user's property tests with kotest and pod-test. (ConsumerBuildSpec also copies the README's
+ * pod-test example into this project's tests: every spec here must run and pass.)
  */
 class HopSpec : StringSpec({
     "pod-test comes in the version of the Pod modules it tests" {
