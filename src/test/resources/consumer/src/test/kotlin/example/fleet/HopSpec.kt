@@ -6,21 +6,23 @@ import io.kotest.property.Arb
 import io.kotest.property.arbitrary.double
 import io.kotest.property.arbitrary.int
 import io.kotest.property.checkAll
-import pod.core.POD_VERSION
 import pod.core.mission.MissionCompletion
 import pod.core.mission.MissionStep
 import pod.core.units.Location
 import pod.core.units.m
 import pod.dsl.mission
-import pod.test.podTestVersion
+import pod.test.mission
 
 /**
  * A user's property tests with kotest and pod-test. (ConsumerBuildSpec also copies the README's
  * pod-test example into this project's tests: every spec here must run and pass.)
  */
 class HopSpec : StringSpec({
-    "pod-test comes in the version of the Pod modules it tests" {
-        podTestVersion shouldBe POD_VERSION
+    "any mission pod-test draws takes off first and ends landed" {
+        checkAll(Arb.mission(Location(41.178, -8.596, 0.m), radius = 150.m)) { drawn ->
+            (drawn.steps.first() is MissionStep.TakeOff) shouldBe true
+            drawn.completion shouldBe MissionCompletion.LANDED
+        }
     }
 
     "for any home, height and leg, the mission takes off first, climbs to the height and ends landed at home" {
