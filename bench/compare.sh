@@ -18,7 +18,7 @@ machine_info
 for part in "${parts[@]}"; do
   for dir in "$before" "$after"; do
     side=$(basename "$dir")
-    cp="$dir/bench/target/pod-bench-0.1.0-SNAPSHOT.jar:$dir/bench/target/lib/*"
+    cp="$(bench_jar "$dir"):$dir/bench/target/lib/*"
     echo "== $part on $side ($(cd "$dir" && git rev-parse --short HEAD)); load average before: $(load)"
     case $part in
       ingest) timeout 600 java -Xms512m -Xmx512m -cp "$cp" pod.bench.IngestBenchKt --count 200000 --repeats 3 \

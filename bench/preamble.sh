@@ -5,7 +5,9 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 results="$root/bench/target/results"
-cp="$root/bench/target/pod-bench-0.1.0-SNAPSHOT.jar:$root/bench/target/lib/*"
+# The benchmark jar of a worktree, whatever version it was built at (pod-bench-<version>.jar).
+bench_jar() { ls "$1"/bench/target/pod-bench-*.jar 2>/dev/null | grep -v -- '-sources' | head -1; }
+cp="$(bench_jar "$root"):$root/bench/target/lib/*"
 
 # `--quick` first: a smoke run with short settings (figures not meaningful); taken off the arguments
 # the script passes on to its harness.
@@ -30,6 +32,7 @@ build_bench() {
     ./mvnw -B -ntp -Dkotlin.compiler.daemon=false -Pbench -pl bench -am package -DskipTests
   fi
   mkdir -p "$results"
+  cp="$(bench_jar "$root"):$root/bench/target/lib/*"
 }
 
 # The load average now: other work on this machine shows in the figures, so each run says how busy it was.

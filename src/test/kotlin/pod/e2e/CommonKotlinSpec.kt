@@ -45,7 +45,7 @@ class CommonKotlinSpec : StringSpec({
         "System.currentTimeMillis()" to ("fun now(): Long =\n    System.currentTimeMillis()" to "3:5: error: unresolved reference 'System'"),
         "Math.abs(x)" to ("fun distance(x: Int): Int =\n    Math.abs(x)" to "3:5: error: unresolved reference 'Math'"),
         "@Synchronized" to ("class Counter {\n    @Synchronized fun next(): Int = 1\n}" to "3:6: error: unresolved reference 'Synchronized'"),
-        "Thread" to ("fun pause() {\n    Thread.sleep(10)\n}" to "3:5: error: unresolved reference 'Thread'"),
+        "Thread" to ("fun threadName(): String =\n    Thread.currentThread().name" to "3:5: error: unresolved reference 'Thread'"),
         "a java.util.concurrent import" to (
             "import java.util.concurrent.ConcurrentHashMap\nval seen = ConcurrentHashMap<String, Int>()" to
                 "2:8: error: unresolved reference 'java'"
