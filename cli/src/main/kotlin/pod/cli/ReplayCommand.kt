@@ -9,9 +9,7 @@ import com.github.ajalt.clikt.parameters.options.default
 import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.options.validate
-import com.github.ajalt.clikt.parameters.types.double
 import com.github.ajalt.clikt.parameters.types.path
-import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.NonCancellable
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.first
@@ -20,7 +18,6 @@ import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.withContext
 import pod.cli.json.Event
 import pod.cli.json.EventJson
-import pod.core.time.Timebase
 import pod.launch.Interrupted
 import pod.launch.Interruption
 import pod.launch.map.FlightMap
@@ -32,7 +29,6 @@ import pod.mavlink.tlog.TlogReader
 import pod.mavlink.tlog.TlogReplayLink
 import pod.mavlink.tlog.TrackRecorder
 import java.nio.file.Path
-import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.DurationUnit
 
@@ -43,8 +39,9 @@ import kotlin.time.DurationUnit
  */
 internal class ReplayCommand(private val out: Output) : CliktCommand(name = "replay") {
     private val file by argument("FILE", help = "the tlog to play (Pod's, MAVProxy's or pymavlink's)")
-    private val speed by option("--speed", help = "how many times faster than recorded to play it").double().default(1.0)
-        .validate { require(it > 0.0 && it.isFinite() && it <= MAX_SPEED) { "must be a number > 0 and ≤ $MAX_SPEED, was $it" } }
+    private val speed by option("--speed", help = "how many times faster than recorded to play it, or max: as fast as it can")
+        .convert { if (it == "max") Double.POSITIVE_INFINITY else it.toDoubleOrNull() ?: fail("must be a number > 0 or max, was $it") }
+        .default(1.0).validate { require(it > 0.0) { "must be a number > 0 or max, was $it" } }
     private val json by option("--json", help = "one JSON object per event or update, per line").flag()
     private val map by option("--map", help = "where to write the tracks the replay showed: .svg, .geojson or .kml").path()
     private val lostAfter by option("--lost-after", help = "log time of silence after which a vehicle is marked lost ($DURATION_FORMAT)")
@@ -61,20 +58,19 @@ internal class ReplayCommand(private val out: Output) : CliktCommand(name = "rep
         } catch (e: TlogException) {
             badInput(e.message!!)
         }
-        // A log cannot answer: the station asks it for nothing. Silence is measured in log time:
-        // the station reads the log's clock (a process that falls behind plays late, and nobody
-        // is lost for it), its loops pace on the wall clock, checking silence four times per
-        // --lost-after of log as it plays (at least every millisecond).
+        // A log cannot answer: the station asks it for nothing. The station lives in log time
+        // (TlogReplayLink.logTimebase): it reads the log's clock and its timers, the silence check
+        // among them, fire as the log passes their time, so a vehicle is lost after --lost-after of
+        // log whatever the speed, and a process that falls behind only plays late.
         val config = GroundStationConfig(
             lostAfter = lostAfter, streamRates = emptyMap(), requestHome = false, requestPayloads = false,
-            timebase = Timebase(link.logClock, Dispatchers.Default),
-            silenceCheckEvery = maxOf(lostAfter / speed / 4, 1.milliseconds),
+            timebase = link.logTimebase,
         )
         val gcs = GroundStation.open(link, this, config)
         val tracks = TrackRecorder()
         val recording = gcs.record(tracks)
         val view = LiveView(out, json)
-        if (json) out.line(EventJson.encode(Event.Replaying(file, speed))) else view.note("replaying $file at ${speed}x")
+        if (json) out.line(EventJson.encode(Event.Replaying(file, speed.takeIf { it.isFinite() }))) else view.note("replaying $file " + if (speed.isFinite()) "at ${speed}x" else "as fast as it can")
         // Played only now that the tracks are recorded: at a high speed the first frames come at once.
         link.play()
         try {
@@ -127,10 +123,5 @@ internal class ReplayCommand(private val out: Output) : CliktCommand(name = "rep
         val drawn = FlightMap("replay of ${Path.of(file).fileName}")
         tracks.tracks().forEach(drawn::track)
         LocalFiles.writeMap(drawn, target.toString())
-    }
-
-    private companion object {
-        /** Faster than this, the station's silence checks (a quarter of `--lost-after`) cannot keep up with log time. */
-        const val MAX_SPEED = 1000.0
     }
 }

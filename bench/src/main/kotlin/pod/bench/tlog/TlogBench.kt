@@ -22,7 +22,7 @@ import kotlin.time.TimeSource
  * position of each); a pass that read something else is marked ✗ and the program exits with 1.
  *
  * Usage: `TlogBenchKt [--vehicles 4] [--duration 1h] [--seed 1] [--log FILE] [--reads 5] [--warmup 2]
- * [--python-reads 5] [--python-warmup 1] [--speeds 1000,1e9] [--replays 3] [--replay-warmup 1]
+ * [--python-reads 5] [--python-warmup 1] [--speeds 1000,max] [--replays 3] [--replay-warmup 1]
  * [--bare-replay true] [--python .venv/bin/python] [--script bench/pymavlink_tlog.py]
  * [--peer-log FILE] [--json FILE] [--markdown FILE]`. Every pass is bounded (a read by the file, the
  * Python peer by 2 minutes a read, a replay by its log time over its speed plus 2 minutes).
@@ -77,8 +77,9 @@ fun main(args: Array<String>) {
     }
 }
 
-/** "1000×", or for a speed at which the pacing never waits "unpaced (speed 1e9)". */
+/** "1000×", or for a speed at which the pacing never waits "unpaced (speed 1e9)", or "unpaced (`--speed max`)". */
 private fun speedText(speed: Double): String {
+    if (speed.isInfinite()) return "unpaced (`--speed max`)"
     val exponent = kotlin.math.log10(speed)
     val text = if (exponent >= 4 && exponent == kotlin.math.floor(exponent)) "1e${exponent.toInt()}" else String.format(Locale.ROOT, "%.0f", speed)
     return if (speed >= 1e6) "unpaced (speed $text)" else "$text×"

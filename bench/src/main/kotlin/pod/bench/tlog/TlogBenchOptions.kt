@@ -30,8 +30,8 @@ data class TlogBenchOptions(
     /** Measured pymavlink reads, after [pythonWarmUp] not kept (one process for all). */
     val pythonReads: Int = 5,
     val pythonWarmUp: Int = 1,
-    /** Replay speeds; 1e9 plays faster than the link can deliver, so the pacing never waits. */
-    val speeds: List<Double> = listOf(1000.0, 1e9),
+    /** Replay speeds; infinite (`max`) plays unpaced, as fast as the station takes the log. */
+    val speeds: List<Double> = listOf(1000.0, Double.POSITIVE_INFINITY),
     /** Measured replays per speed, after [replayWarmUp] not kept. */
     val replays: Int = 3,
     val replayWarmUp: Int = 1,
@@ -60,8 +60,8 @@ private class TlogBenchCommand : BenchCommand<TlogBenchOptions>("TlogBenchKt", "
     private val warmUp by option("--warmup").count(0..100).default(d.warmUp)
     private val pythonReads by option("--python-reads").count(0..100).default(d.pythonReads)
     private val pythonWarmUp by option("--python-warmup").count(0..100).default(d.pythonWarmUp)
-    private val speeds by option("--speeds", help = "replay speeds (1e9: unpaced)").convert("SPEED") { text ->
-        text.trim().toDoubleOrNull()?.takeIf { it > 0 && it.isFinite() } ?: fail("must be a finite number > 0, was $text")
+    private val speeds by option("--speeds", help = "replay speeds (max: unpaced, as `pod replay --speed max`)").convert("SPEED") { text ->
+        if (text.trim() == "max") Double.POSITIVE_INFINITY else text.trim().toDoubleOrNull()?.takeIf { it > 0 } ?: fail("must be a number > 0 or max, was $text")
     }.split(",").default(d.speeds)
     private val replays by option("--replays").count(1..100).default(d.replays)
     private val replayWarmUp by option("--replay-warmup").count(0..100).default(d.replayWarmUp)

@@ -97,9 +97,9 @@ public sealed interface Event {
 
     // ---- pod replay ----
 
-    /** `pod replay` started playing [file] at [speed] times the recorded pace. */
+    /** `pod replay` started playing [file] at [speed] times the recorded pace; null with `--speed max` (unpaced). */
     @Serializable @SerialName("replaying")
-    public data class Replaying(val file: String, val speed: Finite) : Event
+    public data class Replaying(val file: String, val speed: Finite?) : Event
 
     /**
      * `pod replay` ended: [records] played, covering [logS] seconds of the log; [error] says why the

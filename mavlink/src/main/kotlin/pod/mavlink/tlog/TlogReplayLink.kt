@@ -2,6 +2,7 @@ package pod.mavlink.tlog
 
 import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.delay
+import kotlinx.coroutines.withContext
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
@@ -14,8 +15,6 @@ import pod.mavlink.link.MavlinkLink
 import java.nio.file.Path
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.microseconds
-import kotlin.time.AbstractLongTimeSource
-import kotlin.time.DurationUnit
 import kotlin.time.TimeMark
 import kotlin.time.TimeSource
 
@@ -25,8 +24,14 @@ import kotlin.time.TimeSource
  * if they were live. What the station sends goes nowhere: a log cannot answer.
  *
  * Records are due at `(timestamp − first timestamp) / speed` after [receive] starts, on
- * [timebase]'s clock (a test passes a virtual one). A record stamped earlier than one before it (a
- * recorder whose clock stepped back) is delivered at once, never reordered. [receive] returns
+ * [timebase]'s clock (a test passes a virtual one); at an infinite [speed] (`pod replay --speed
+ * max`) nothing waits: the log plays as fast as the station takes it. A record stamped earlier than
+ * one before it (a recorder whose clock stepped back) is delivered at once, never reordered.
+ *
+ * A station opened with [GroundStationConfig.timebase][pod.mavlink.GroundStationConfig.timebase]
+ * = [logTimebase] lives in log time: its clock is [logClock], and its timers (silence checks, its
+ * heartbeat) fire as the log passes their time, between the records they fall between, whatever
+ * the speed. [receive] returns
  * when the log has been played to its end, or cut short by a [TlogTruncated] or [TlogCorrupt]
  * record, or when the link is [close]d; [progress] tells which.
  *
@@ -38,18 +43,18 @@ import kotlin.time.TimeSource
 public class TlogReplayLink private constructor(
     private val reader: TlogReader,
     path: Path,
-    /** How many times faster than recorded the log plays: 1 is real time. */
+    /** How many times faster than recorded the log plays: 1 is real time, infinite as fast as it can. */
     public val speed: Double,
     private val timebase: Timebase,
     paused: Boolean,
 ) : MavlinkLink {
     @Volatile private var closed = false
+    private val paced = speed.isFinite()
     private val playing = CompletableDeferred<Unit>().apply { if (!paused) complete(Unit) }
     private var receiving = false
     private val _progress = MutableStateFlow(ReplayProgress())
 
-    /** Log time of the record played last, in microseconds from the first: what [logClock] reads. */
-    @Volatile private var playedMicros: Long = 0
+    private val timeline = LogTimeline(timebase.dispatcher)
 
     /**
      * The log's own time as a clock: how far into the log the replay has played (the record being
@@ -57,9 +62,14 @@ public class TlogReplayLink private constructor(
      * measures a vehicle's silence in log time, at any speed and however late this process plays a
      * record: a pause of the replay is no silence of the vehicles.
      */
-    public val logClock: TimeSource.WithComparableMarks = object : AbstractLongTimeSource(DurationUnit.MICROSECONDS) {
-        override fun read(): Long = playedMicros
-    }
+    public val logClock: TimeSource.WithComparableMarks = timeline.clock
+
+    /**
+     * Log time for a station on this replay: [logClock], and a dispatcher that runs coroutines on
+     * the [timebase]'s dispatcher and whose `delay`s and timeouts follow [logClock], each timer
+     * run as the replay passes its time, before the next record is delivered.
+     */
+    public val logTimebase: Timebase = Timebase(timeline.clock, timeline)
 
     override val address: LinkAddress = LinkAddress.Replay(path.toString())
 
@@ -89,10 +99,13 @@ public class TlogReplayLink private constructor(
                 val t0 = first ?: record.timestampMicros.also { first = it }
                 val start = started ?: timebase.clock.markNow().also { started = it }
                 val logTime = (record.timestampMicros - t0).coerceAtLeast(0).microseconds
-                val wait = logTime / speed - start.elapsedNow()
-                if (wait.isPositive()) delay(wait)
-                if (closed) break
-                playedMicros = maxOf(playedMicros, logTime.inWholeMicroseconds)
+                if (paced) {
+                    val wait = logTime / speed - start.elapsedNow()
+                    // On the pacing timebase: this coroutine may run on [logTimebase], whose delays wait for the log.
+                    if (wait.isPositive()) withContext(timebase.dispatcher) { delay(wait) }
+                    if (closed) break
+                }
+                timeline.advanceTo(logTime.inWholeMicroseconds)
                 onBytes(RECORDING, record.frame)
                 _progress.update { it.copy(records = it.records + 1, logTime = maxOf(it.logTime, logTime)) }
             }
@@ -133,8 +146,9 @@ public class TlogReplayLink private constructor(
 
         /**
          * Opens the tlog at [path] for replay at [speed] on [timebase], playing as soon as it is
-         * received from, or, if [paused], once [play] is called. A file that cannot be opened throws
-         * [TlogException]; a [speed] that is not a finite number > 0 throws [IllegalArgumentException].
+         * received from, or, if [paused], once [play] is called; at [Double.POSITIVE_INFINITY] it plays
+         * unpaced. A file that cannot be opened throws [TlogException]; a [speed] that is not a number
+         * > 0 throws [IllegalArgumentException].
          */
         public fun open(
             path: Path,
@@ -143,7 +157,7 @@ public class TlogReplayLink private constructor(
             codec: MessageCodec = MessageCodec.Default,
             paused: Boolean = false,
         ): TlogReplayLink {
-            require(speed > 0.0 && speed.isFinite()) { "speed must be a finite number > 0, was $speed" }
+            require(speed > 0.0) { "speed must be a number > 0, was $speed" }
             return TlogReplayLink(TlogReader.open(path, codec), path, speed, timebase, paused)
         }
     }
