@@ -19,12 +19,15 @@ import kotlinx.coroutines.job
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withTimeoutOrNull
 import pod.mavlink.codec.FrameEncoder
+import pod.mavlink.codec.FrameView
+import pod.mavlink.codec.FrameViewSink
 import pod.mavlink.codec.MavFrame
 import pod.mavlink.codec.MessageCodec
 import pod.mavlink.link.LinkException
 import pod.mavlink.link.LinkPeer
 import pod.mavlink.link.MavlinkLink
 import pod.mavlink.signing.SignedFrames
+import pod.mavlink.telemetry.HotMessages
 import pod.mavlink.radio.RadioPacer
 import pod.mavlink.radio.RadioStatus
 import pod.mavlink.tlog.FrameDirection
@@ -229,18 +232,45 @@ public class GroundStation private constructor(
     // it); the counters are @Volatile with this one writer; the StatusText joiner is synchronized;
     // events and messages go out through SharedFlow.tryEmit, which is thread-safe.
     private fun onBytes(peer: LinkPeer, bytes: ByteArray) {
-        val decoder = decoders.decoderFor(peer)
-        decoder.feed(bytes) { frame ->
-            if (signing != null && !signing.admit(frame)) return@feed // refused: counted, never recorded or routed
-            if (taps.active) taps.onFrame(FrameDirection.RECEIVED, encoder.wireBytes(frame))
-            if (forwarding.active) forwarding.onFrame(peer, frame)
-            try {
-                route(peer, frame)
-            } catch (e: Exception) {
-                // A frame that passed its CRC but breaks a handler (a vehicle sending nonsense) must
-                // not stop the receive loop; it is counted instead.
-                handlerErrors++
-            }
+        receivingFrom = peer
+        decoders.decoderFor(peer).feedViews(bytes, 0, bytes.size, frameSink)
+    }
+
+    /** The peer of the datagram being parsed: [frameSink] is made once, so it cannot capture it. */
+    private var receivingFrom: LinkPeer? = null
+
+    private val frameSink = FrameViewSink { view -> onFrameView(receivingFrom!!, view) }
+
+    private fun onFrameView(peer: LinkPeer, view: FrameView) {
+        // The common case reads a hot telemetry message in place and allocates nothing. Anything a
+        // frame object is needed for (signing, recording, forwarding, other messages) copies it out.
+        if (signing == null && !taps.active && !forwarding.active && routeInPlace(peer, view)) return
+        val frame = view.toFrame()
+        if (signing != null && !signing.admit(frame)) return // refused: counted, never recorded or routed
+        if (taps.active) taps.onFrame(FrameDirection.RECEIVED, encoder.wireBytes(frame))
+        if (forwarding.active) forwarding.onFrame(peer, frame)
+        try {
+            route(peer, frame)
+        } catch (e: Exception) {
+            // A frame that passed its CRC but breaks a handler (a vehicle sending nonsense) must
+            // not stop the receive loop; it is counted instead.
+            handlerErrors++
+        }
+    }
+
+    /** Routes a hot telemetry message straight from [view] (see [VehicleRegistry.onHotFrame]); false when [route] must. */
+    private fun routeInPlace(peer: LinkPeer, view: FrameView): Boolean {
+        if (!HotMessages.isHot(view.messageId)) return false
+        if (view.systemId == config.systemId && view.componentId == config.componentId) return true
+        if (view.systemId == 0) {
+            fromSystemZero++
+            return true
+        }
+        return try {
+            registry.onHotFrame(peer, view)
+        } catch (e: Exception) {
+            handlerErrors++ // as in onFrameView: a collector of the telemetry that throws
+            true
         }
     }
 
