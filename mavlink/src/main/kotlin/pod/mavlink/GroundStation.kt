@@ -226,9 +226,11 @@ public class GroundStation private constructor(
     // Runs on the link's receive path (a UDP link's own thread), one datagram at a time: it is the
     // only writer of the routing state. What other threads read is safe as follows: `decoders`
     // locks itself (the tracking loop adds up its counters); the registry's `_vehicles`, `_identity`, telemetry
-    // and `_payloads` are StateFlows with this one writer; `_connection` changes only by
-    // compareAndSet (the tracking loop marks LOST, this path CONNECTED again); `peer` and
-    // `lastHeartbeat` are @Volatile; `heardMessages` is a concurrent set (StreamRequests clears
+    // and `_payloads` are StateFlows with this one writer (position, attitude, battery, hud and link
+    // quality are SnapshotStateFlows: numbers written and read under each one's lock); the registry's
+    // `bySystem`, the hot-message holders and the decoders' frame views are this path's alone;
+    // `_connection` changes only by compareAndSet (the tracking loop marks LOST, this path CONNECTED
+    // again); `peer` and the heartbeat time are @Volatile; `heardMessages` is a concurrent set (StreamRequests clears
     // it); the counters are @Volatile with this one writer; the StatusText joiner is synchronized;
     // events and messages go out through SharedFlow.tryEmit, which is thread-safe.
     private fun onBytes(peer: LinkPeer, bytes: ByteArray) {
