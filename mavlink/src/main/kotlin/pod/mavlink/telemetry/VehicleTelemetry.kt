@@ -121,20 +121,35 @@ public class VehicleTelemetry internal constructor() {
      */
     public val cameraFeedback: SharedFlow<CapturedImage> = _cameraFeedback.asSharedFlow()
 
-    // What the current mode was decoded for: a heartbeat that repeats them decodes nothing.
+    // What the modes below were decoded for: a heartbeat that repeats them decodes nothing, and a
+    // mode seen before (GUIDED, then AUTO, then GUIDED again) is the object made the first time.
     private var modeAutopilot: Autopilot? = null
     private var modeType: VehicleType? = null
+    private val seenModes = arrayOfNulls<FlightMode>(8)
+    private var nextSeen = 0
+
+    /** The mode [customMode] names for [identity], reusing one of the last [seenModes] when it is one. */
+    private fun modeOf(identity: VehicleIdentity, customMode: Long): FlightMode {
+        if (modeAutopilot !== identity.autopilot || modeType !== identity.type) {
+            seenModes.fill(null)
+            modeAutopilot = identity.autopilot
+            modeType = identity.type
+        }
+        for (seen in seenModes) if (seen != null && seen.customMode == customMode) return seen
+        val mode = FlightModes.decode(identity.autopilot, identity.type, customMode)
+        seenModes[nextSeen] = mode
+        nextSeen = (nextSeen + 1) % seenModes.size
+        return mode
+    }
 
     /**
      * Applies one HEARTBEAT of the vehicle's own component: custom_mode, base_mode and
-     * system_status as on the wire. Allocates only when the mode changes.
+     * system_status as on the wire. Allocates only for a mode not among the last few seen.
      */
     internal fun onHeartbeat(identity: VehicleIdentity, customMode: Long, baseMode: Int, systemStatus: Int) {
         val mode = _mode.value
         if (mode == null || mode.customMode != customMode || modeAutopilot !== identity.autopilot || modeType !== identity.type) {
-            _mode.value = FlightModes.decode(identity.autopilot, identity.type, customMode)
-            modeAutopilot = identity.autopilot
-            modeType = identity.type
+            _mode.value = modeOf(identity, customMode)
         }
         _armed.value = baseMode and MAV_MODE_FLAG_SAFETY_ARMED != 0
         if (_systemStatus.value != systemStatus) _systemStatus.value = systemStatus
