@@ -19,12 +19,15 @@ import kotlinx.coroutines.job
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withTimeoutOrNull
 import pod.mavlink.codec.FrameEncoder
+import pod.mavlink.codec.FrameView
+import pod.mavlink.codec.FrameViewSink
 import pod.mavlink.codec.MavFrame
 import pod.mavlink.codec.MessageCodec
 import pod.mavlink.link.LinkException
 import pod.mavlink.link.LinkPeer
 import pod.mavlink.link.MavlinkLink
 import pod.mavlink.signing.SignedFrames
+import pod.mavlink.telemetry.HotMessages
 import pod.mavlink.radio.RadioPacer
 import pod.mavlink.radio.RadioStatus
 import pod.mavlink.tlog.FrameDirection
@@ -223,24 +226,53 @@ public class GroundStation private constructor(
     // Runs on the link's receive path (a UDP link's own thread), one datagram at a time: it is the
     // only writer of the routing state. What other threads read is safe as follows: `decoders`
     // locks itself (the tracking loop adds up its counters); the registry's `_vehicles`, `_identity`, telemetry
-    // and `_payloads` are StateFlows with this one writer; `_connection` changes only by
-    // compareAndSet (the tracking loop marks LOST, this path CONNECTED again); `peer` and
-    // `lastHeartbeat` are @Volatile; `heardMessages` is a concurrent set (StreamRequests clears
+    // and `_payloads` are StateFlows with this one writer (position, attitude, battery, hud and link
+    // quality are SnapshotStateFlows: numbers written and read under each one's lock); the registry's
+    // `bySystem`, the hot-message holders and the decoders' frame views are this path's alone;
+    // `_connection` changes only by compareAndSet (the tracking loop marks LOST, this path CONNECTED
+    // again); `peer` and the heartbeat time are @Volatile; `heardMessages` is a concurrent set (StreamRequests clears
     // it); the counters are @Volatile with this one writer; the StatusText joiner is synchronized;
     // events and messages go out through SharedFlow.tryEmit, which is thread-safe.
     private fun onBytes(peer: LinkPeer, bytes: ByteArray) {
-        val decoder = decoders.decoderFor(peer)
-        decoder.feed(bytes) { frame ->
-            if (signing != null && !signing.admit(frame)) return@feed // refused: counted, never recorded or routed
-            if (taps.active) taps.onFrame(FrameDirection.RECEIVED, encoder.wireBytes(frame))
-            if (forwarding.active) forwarding.onFrame(peer, frame)
-            try {
-                route(peer, frame)
-            } catch (e: Exception) {
-                // A frame that passed its CRC but breaks a handler (a vehicle sending nonsense) must
-                // not stop the receive loop; it is counted instead.
-                handlerErrors++
-            }
+        receivingFrom = peer
+        decoders.decoderFor(peer).feedViews(bytes, 0, bytes.size, frameSink)
+    }
+
+    /** The peer of the datagram being parsed: [frameSink] is made once, so it cannot capture it. */
+    private var receivingFrom: LinkPeer? = null
+
+    private val frameSink = FrameViewSink { view -> onFrameView(receivingFrom!!, view) }
+
+    private fun onFrameView(peer: LinkPeer, view: FrameView) {
+        // The common case reads a hot telemetry message in place and allocates nothing. Anything a
+        // frame object is needed for (signing, recording, forwarding, other messages) copies it out.
+        if (signing == null && !taps.active && !forwarding.active && routeInPlace(peer, view)) return
+        val frame = view.toFrame()
+        if (signing != null && !signing.admit(frame)) return // refused: counted, never recorded or routed
+        if (taps.active) taps.onFrame(FrameDirection.RECEIVED, encoder.wireBytes(frame))
+        if (forwarding.active) forwarding.onFrame(peer, frame)
+        try {
+            route(peer, frame)
+        } catch (e: Exception) {
+            // A frame that passed its CRC but breaks a handler (a vehicle sending nonsense) must
+            // not stop the receive loop; it is counted instead.
+            handlerErrors++
+        }
+    }
+
+    /** Routes a hot telemetry message straight from [view] (see [VehicleRegistry.onHotFrame]); false when [route] must. */
+    private fun routeInPlace(peer: LinkPeer, view: FrameView): Boolean {
+        if (!HotMessages.isHot(view.messageId)) return false
+        if (view.systemId == config.systemId && view.componentId == config.componentId) return true
+        if (view.systemId == 0) {
+            fromSystemZero++
+            return true
+        }
+        return try {
+            registry.onHotFrame(peer, view)
+        } catch (e: Exception) {
+            handlerErrors++ // as in onFrameView: a collector of the telemetry that throws
+            true
         }
     }
 

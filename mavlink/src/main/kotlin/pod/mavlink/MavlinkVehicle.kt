@@ -11,19 +11,22 @@ import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asSharedFlow
 import kotlinx.coroutines.flow.asStateFlow
 import pod.core.vehicle.ConnectionState
-import pod.core.vehicle.LinkQuality
 import pod.core.vehicle.Severity
 import pod.core.vehicle.StatusText
 import pod.core.vehicle.VehicleIdentity
 import pod.mavlink.action.VehicleActions
+import pod.mavlink.codec.FrameView
 import pod.mavlink.codec.MavFrame
 import pod.mavlink.command.CommandService
 import pod.mavlink.link.LinkPeer
 import pod.mavlink.mission.MissionService
 import pod.mavlink.param.ParamService
 import pod.mavlink.protocol.RoundTrips
+import pod.mavlink.telemetry.HotFields
+import pod.mavlink.telemetry.HotMessages
 import pod.mavlink.telemetry.StatusTextJoiner
 import pod.mavlink.telemetry.VehicleTelemetry
+import kotlin.time.Duration.Companion.nanoseconds
 import kotlin.time.TimeMark
 import kotlin.time.TimeSource
 
@@ -68,7 +71,12 @@ public class MavlinkVehicle internal constructor(
     /** Message ids heard from the autopilot since the station last asked for streams (see [StreamRequests]). */
     internal val heardMessages: MutableSet<Int> = java.util.concurrent.ConcurrentHashMap.newKeySet()
 
-    @Volatile internal var lastHeartbeat: TimeMark = clock.markNow()
+    /** When the last HEARTBEAT came, in ns since [heartbeatOrigin]: a number, so that a heartbeat stores no object. */
+    private val heartbeatOrigin: TimeMark = clock.markNow()
+    @Volatile private var lastHeartbeatNanos = 0L
+
+    /** When the last HEARTBEAT of its own component came (its creation until the first). */
+    internal val lastHeartbeat: TimeMark get() = heartbeatOrigin + lastHeartbeatNanos.nanoseconds
     @Volatile internal var peer: LinkPeer? = null
 
     /** MAVLink system id, 1..255. */
@@ -145,6 +153,16 @@ public class MavlinkVehicle internal constructor(
      */
     private val taps = java.util.concurrent.CopyOnWriteArrayList<(InboundMessage) -> Unit>()
 
+    /** How many collect [messages] (read once per frame, so fetched once here). */
+    private val messageCollectors: StateFlow<Int> = _messages.subscriptionCount
+
+    /**
+     * Whether anyone needs this vehicle's frames as objects ([messages] collectors, [taps]): when
+     * nobody does, the hot telemetry messages are read in place ([onHotFrame]), as no one would
+     * see the objects (a SharedFlow with no collectors and no replay drops what it is given).
+     */
+    internal val wantsObjects: Boolean get() = taps.isNotEmpty() || messageCollectors.value > 0
+
     /** Adds [listener] to the receive path (see [taps]); the returned function removes it. */
     internal fun tap(listener: (InboundMessage) -> Unit): () -> Unit {
         taps += listener
@@ -192,23 +210,15 @@ public class MavlinkVehicle internal constructor(
     /** Called on the station's receive path (a UDP link's own thread) for every frame of this system; see GroundStation.onBytes for what it may touch. */
     internal fun onFrame(frame: MavFrame, message: Any?) {
         gaps.record(frame.componentId, frame.sequence)
-        telemetry.onLinkQuality(LinkQuality(gaps.received, gaps.lost))
-        if (message is Heartbeat && frame.componentId == _identity.value.componentId) {
-            lastHeartbeat = clock.markNow()
-            val id = _identity.value
-            val updated = id.copy(
-                type = MavlinkEnums.vehicleType(message.type().value()),
-                autopilot = MavlinkEnums.autopilot(message.autopilot().value()),
-            )
-            if (updated != id) _identity.value = updated
-            telemetry.onHeartbeat(updated, message)
-        } else if (message != null && frame.componentId == _identity.value.componentId) {
+        telemetry.onLinkQuality(gaps.received, gaps.lost)
+        val own = frame.componentId == _identity.value.componentId
+        if (message is Heartbeat) {
+            onHeartbeat(own, message.type().value(), message.autopilot().value(), message.baseMode().value(), message.customMode(), message.systemStatus().value())
+        } else if (message != null && own) {
             telemetry.onMessage(message)
         }
-        if ((message is Heartbeat && message.type().value() == MAV_TYPE_CAMERA) || message is CameraInformation) {
-            if (CAMERA !in _payloads.value) _payloads.value = _payloads.value + CAMERA
-        }
-        if (frame.componentId == _identity.value.componentId) heardMessages += frame.messageId
+        if (message is CameraInformation) addPayload(CAMERA)
+        if (own) heard(frame.messageId)
         if (message is Statustext) {
             val severity = Severity.entries.getOrElse(message.severity().value()) { Severity.DEBUG }
             val lines = synchronized(texts) { texts.feed(severity, message.text(), message.id(), message.chunkSeq(), textClock.elapsedNow().inWholeNanoseconds, _identity.value.autopilot) }
@@ -217,6 +227,63 @@ public class MavlinkVehicle internal constructor(
         val inbound = InboundMessage(frame, message)
         for (tap in taps) tap(inbound)
         _messages.tryEmit(inbound)
+    }
+
+    /**
+     * [onFrame] for a hot telemetry message ([HotMessages]) read in place from [view] into
+     * [fields], when nobody [wantsObjects]: the same effects, with no object made unless a
+     * telemetry value that is an object (mode, identity) changes.
+     */
+    internal fun onHotFrame(view: FrameView, fields: HotFields) {
+        gaps.record(view.componentId, view.sequence)
+        telemetry.onLinkQuality(gaps.received, gaps.lost)
+        val own = view.componentId == _identity.value.componentId
+        when (view.messageId) {
+            MessageIds.HEARTBEAT -> {
+                val h = fields.heartbeat.apply { read(view) }
+                onHeartbeat(own, h.type, h.autopilot, h.baseMode, h.customMode, h.systemStatus)
+            }
+            MessageIds.GLOBAL_POSITION_INT -> if (own) {
+                val p = fields.position.apply { read(view) }
+                telemetry.onGlobalPosition(p.lat, p.lon, p.alt, p.relativeAlt, p.vx, p.vy, p.vz, p.hdg)
+            }
+            MessageIds.ATTITUDE -> if (own) {
+                val a = fields.attitude.apply { read(view) }
+                telemetry.onAttitude(a.roll, a.pitch, a.yaw)
+            }
+            MessageIds.SYS_STATUS -> if (own) {
+                val s = fields.sysStatus.apply { read(view) }
+                telemetry.onSysStatus(s.batteryRemaining, s.voltageBattery)
+            }
+            MessageIds.VFR_HUD -> if (own) {
+                val h = fields.hud.apply { read(view) }
+                telemetry.onHud(h.airspeed, h.groundspeed, h.alt, h.climb, h.heading, h.throttle)
+            }
+        }
+        if (own) heard(view.messageId)
+    }
+
+    /** A HEARTBEAT from component [own] (the autopilot's) or another of the system (a camera). */
+    private fun onHeartbeat(own: Boolean, type: Int, autopilot: Int, baseMode: Int, customMode: Long, systemStatus: Int) {
+        if (own) {
+            lastHeartbeatNanos = heartbeatOrigin.elapsedNow().inWholeNanoseconds
+            val id = _identity.value
+            val vehicleType = MavlinkEnums.vehicleType(type)
+            val kind = MavlinkEnums.autopilot(autopilot)
+            val updated = if (vehicleType == id.type && kind == id.autopilot) id else id.copy(type = vehicleType, autopilot = kind)
+            if (updated !== id) _identity.value = updated
+            telemetry.onHeartbeat(updated, customMode, baseMode, systemStatus)
+        }
+        if (type == MAV_TYPE_CAMERA) addPayload(CAMERA)
+    }
+
+    private fun addPayload(name: String) {
+        if (name !in _payloads.value) _payloads.value = _payloads.value + name
+    }
+
+    /** Notes [messageId] as heard from the autopilot (a look-up, not an insert, once it is there). */
+    private fun heard(messageId: Int) {
+        if (messageId !in heardMessages) heardMessages += messageId
     }
 
     /** Delivers chunked lines whose missing chunks are overdue; the station calls it a few times a second. */

@@ -35,8 +35,21 @@ internal class PeerDecoders(private val capacity: Int, private val codec: Messag
         }
     }
 
+    // The peer asked for last and its decoder: most datagrams come from the peer of the one before
+    // (one vehicle per link, or bursts), which then costs no lock and no hash. Only the receive
+    // path calls decoderFor, and a decoder is evicted only inside it, for another peer, which then
+    // becomes the last one: the pair never names an evicted decoder.
+    private var lastPeer: LinkPeer? = null
+    private var lastDecoder: FrameDecoder? = null
+
     /** The decoder of [peer], made when the peer is new (which may evict the least recent one). */
-    fun decoderFor(peer: LinkPeer): FrameDecoder = synchronized(lock) { decoders.getOrPut(peer) { FrameDecoder(codec) } }
+    fun decoderFor(peer: LinkPeer): FrameDecoder {
+        if (peer === lastPeer) return lastDecoder!!
+        val decoder = synchronized(lock) { decoders.getOrPut(peer) { FrameDecoder(codec) } }
+        lastPeer = peer
+        lastDecoder = decoder
+        return decoder
+    }
 
     /** How many peers have a decoder now. */
     val size: Int get() = synchronized(lock) { decoders.size }

@@ -9,8 +9,11 @@ import kotlinx.coroutines.flow.asSharedFlow
 import kotlinx.coroutines.flow.asStateFlow
 import pod.core.vehicle.ConnectionState
 import pod.core.vehicle.VehicleIdentity
+import pod.mavlink.codec.FrameView
 import pod.mavlink.codec.MavFrame
 import pod.mavlink.link.LinkPeer
+import pod.mavlink.telemetry.HotFields
+import pod.mavlink.telemetry.HotMessages
 import kotlin.time.Duration
 
 /**
@@ -32,6 +35,12 @@ internal class VehicleRegistry(
     private val _events = MutableSharedFlow<FleetEvent>(extraBufferCapacity = 256)
     @Volatile private var unrouted = 0L
 
+    /** [vehicles] by system id as an array: the receive path looks a vehicle up with no boxed key. Its writer is the receive path. */
+    private val bySystem = arrayOfNulls<MavlinkVehicle>(256)
+
+    /** Where the hot messages are read into, reused for every frame (the receive path's alone). */
+    private val fields = HotFields()
+
     /** Vehicles heard so far by system id, lost ones included. */
     val vehicles: StateFlow<Map<Int, MavlinkVehicle>> = _vehicles.asStateFlow()
 
@@ -43,7 +52,7 @@ internal class VehicleRegistry(
 
     /** Routes [message] (decoded from [frame], null when unknown), heard from [peer], to its vehicle. */
     fun onMessage(peer: LinkPeer, frame: MavFrame, message: Any?) {
-        var vehicle = _vehicles.value[frame.systemId]
+        val vehicle = bySystem[frame.systemId]
         if (message is Heartbeat) {
             val type = message.type().value()
             val autopilot = message.autopilot().value()
@@ -64,12 +73,34 @@ internal class VehicleRegistry(
         vehicle.onFrame(frame, message)
     }
 
+    /**
+     * Routes a hot telemetry message ([HotMessages]) read in place from [view], allocating
+     * nothing; false when it needs [onMessage] instead (a vehicle to find or regain, or one whose
+     * frames someone wants as objects), and then the caller decodes it and calls that.
+     */
+    fun onHotFrame(peer: LinkPeer, view: FrameView): Boolean {
+        val vehicle = bySystem[view.systemId]
+        val heartbeat = view.messageId == MessageIds.HEARTBEAT
+        if (vehicle == null) {
+            // Only a vehicle's heartbeat makes a vehicle; anything else from an unknown system is counted.
+            if (heartbeat && MavlinkEnums.isVehicle(view.u8(HEARTBEAT_TYPE), view.u8(HEARTBEAT_AUTOPILOT))) return false
+            unrouted++
+            return true
+        }
+        if (vehicle.wantsObjects) return false
+        if (heartbeat && view.componentId == vehicle.identity.value.componentId && vehicle._connection.value == ConnectionState.LOST) return false
+        vehicle.peer = peer
+        vehicle.onHotFrame(view, fields)
+        return true
+    }
+
     private fun found(peer: LinkPeer, frame: MavFrame, heartbeat: Heartbeat, identity: VehicleIdentity) {
         val vehicle = MavlinkVehicle(identity, station)
         vehicle.peer = peer
         // Its first heartbeat is applied before anyone can see the vehicle: a caller that
         // picks it from [vehicles] at once reads its armed state and mode, not defaults.
         vehicle.onFrame(frame, heartbeat)
+        bySystem[frame.systemId] = vehicle
         _vehicles.value = _vehicles.value + (frame.systemId to vehicle)
         _events.tryEmit(FleetEvent.Found(vehicle))
         streamRequests.restart(vehicle)
@@ -104,5 +135,11 @@ internal class VehicleRegistry(
                 _events.tryEmit(FleetEvent.Lost(vehicle, silence))
             }
         }
+    }
+
+    private companion object {
+        /** Offsets of HEARTBEAT's type and autopilot in its payload (minimal.xml wire order). */
+        const val HEARTBEAT_TYPE = 4
+        const val HEARTBEAT_AUTOPILOT = 5
     }
 }

@@ -26,6 +26,13 @@ public class FrameDecoder(private val codec: MessageCodec = MessageCodec.Default
     private var head = 0
     private var tail = 0
 
+    /** The one view every frame is read through (see [feedViews]). */
+    private val view = FrameView()
+
+    /** The sink of the [feed] in progress, and what hands it a copied frame: made once, not per call. */
+    private var frameSink: ((MavFrame) -> Unit)? = null
+    private val copier = FrameViewSink { view -> frameSink!!(view.toFrame()) }
+
     /** Bytes kept for the next [feed]: the start of an incomplete frame, always under [FrameLayout.MAX_FRAME]. */
     internal val pendingBytes: Int get() = tail - head
 
@@ -39,6 +46,20 @@ public class FrameDecoder(private val codec: MessageCodec = MessageCodec.Default
      * Throws IndexOutOfBoundsException only when [offset] and [length] do not lie within [bytes].
      */
     public fun feed(bytes: ByteArray, offset: Int = 0, length: Int = bytes.size - offset, sink: (MavFrame) -> Unit) {
+        frameSink = sink
+        try {
+            feedViews(bytes, offset, length, copier)
+        } finally {
+            frameSink = null
+        }
+    }
+
+    /**
+     * [feed] without copying: [sink] is called for each complete valid frame with this decoder's
+     * one [FrameView], pointing into its buffer and valid only during that call. The ground
+     * station's receive path: a frame it can read in place allocates nothing.
+     */
+    internal fun feedViews(bytes: ByteArray, offset: Int, length: Int, sink: FrameViewSink) {
         if (offset < 0 || length < 0 || offset > bytes.size - length) {
             throw IndexOutOfBoundsException("offset $offset and length $length outside ${bytes.size} bytes")
         }
@@ -73,7 +94,7 @@ public class FrameDecoder(private val codec: MessageCodec = MessageCodec.Default
     }
 
     /** Delivers every complete frame in the buffer; leaves [head] at a partial frame's magic, or at [tail]. */
-    private fun parse(sink: (MavFrame) -> Unit) {
+    private fun parse(sink: FrameViewSink) {
         val buf = buffer
         while (head < tail) {
             val start = head
@@ -123,25 +144,23 @@ public class FrameDecoder(private val codec: MessageCodec = MessageCodec.Default
             } else {
                 stats.unknownMessages++
             }
-            val frame = MavFrame(
+            view.fill(
+                buffer = buf,
                 version = version,
                 sequence = buf[start + if (version == 2) 4 else 2].toInt() and 0xFF,
                 systemId = buf[start + if (version == 2) 5 else 3].toInt() and 0xFF,
                 componentId = buf[start + if (version == 2) 6 else 4].toInt() and 0xFF,
                 messageId = messageId,
-                payload = buf.copyOfRange(start + headerLength, checksumAt),
+                payloadOffset = start + headerLength,
+                payloadLength = payloadLength,
                 incompatFlags = if (version == 2) buf[start + 2].toInt() and 0xFF else 0,
                 compatFlags = if (version == 2) buf[start + 3].toInt() and 0xFF else 0,
-                signature = if (signatureLength > 0) {
-                    buf.copyOfRange(checksumAt + FrameLayout.CHECKSUM, checksumAt + FrameLayout.CHECKSUM + signatureLength)
-                } else {
-                    null
-                },
+                signatureOffset = if (signatureLength > 0) checksumAt + FrameLayout.CHECKSUM else -1,
+                wireChecksum = (buf[checksumAt].toInt() and 0xFF) or ((buf[checksumAt + 1].toInt() and 0xFF) shl 8),
             )
-            frame.wireChecksum = (buf[checksumAt].toInt() and 0xFF) or ((buf[checksumAt + 1].toInt() and 0xFF) shl 8)
             head = start + frameLength // before the sink runs, so a throwing sink leaves a consistent state
             stats.frames++
-            sink(frame)
+            sink.onFrame(view)
         }
     }
 

@@ -11,7 +11,7 @@ import io.dronefleet.mavlink.common.HomePosition
 import io.dronefleet.mavlink.common.MissionCurrent
 import io.dronefleet.mavlink.common.MissionItemReached
 import io.dronefleet.mavlink.common.SysStatus
-import io.dronefleet.mavlink.minimal.Heartbeat
+import io.dronefleet.mavlink.common.VfrHud
 import kotlinx.coroutines.channels.BufferOverflow
 import kotlinx.coroutines.flow.MutableSharedFlow
 import kotlinx.coroutines.flow.MutableStateFlow
@@ -25,6 +25,8 @@ import pod.core.units.deg
 import pod.core.units.m
 import pod.core.units.mps
 import pod.core.vehicle.Attitude
+import pod.core.vehicle.Autopilot
+import pod.core.vehicle.VehicleType
 import pod.core.vehicle.Battery
 import pod.core.vehicle.FlightMode
 import pod.core.vehicle.GpsStatus
@@ -38,16 +40,17 @@ import pod.core.vehicle.VehicleIdentity
  * the first one arrives).
  */
 public class VehicleTelemetry internal constructor() {
-    private val _position = MutableStateFlow<Position?>(null)
+    private val _position = PositionFlow()
     private val _home = MutableStateFlow<Location?>(null)
-    private val _attitude = MutableStateFlow<Attitude?>(null)
-    private val _battery = MutableStateFlow<Battery?>(null)
+    private val _attitude = AttitudeFlow()
+    private val _battery = BatteryFlow()
+    private val _hud = HudFlow()
     private val _mode = MutableStateFlow<FlightMode?>(null)
     private val _armed = MutableStateFlow(false)
     private val _landedState = MutableStateFlow(LandedState.UNDEFINED)
     private val _gps = MutableStateFlow<GpsStatus?>(null)
     private val _systemStatus = MutableStateFlow(pod.mavlink.MavStates.UNINIT)
-    private val _linkQuality = MutableStateFlow(LinkQuality(0, 0))
+    private val _linkQuality = LinkQualityFlow()
     private val _missionCurrent = MutableStateFlow<Int?>(null)
     private val _rangefinder = MutableStateFlow<Distance?>(null)
     private val _itemReached = MutableSharedFlow<Int>(extraBufferCapacity = 256, onBufferOverflow = BufferOverflow.DROP_OLDEST)
@@ -55,16 +58,19 @@ public class VehicleTelemetry internal constructor() {
     private val _cameraFeedback = MutableSharedFlow<CapturedImage>(extraBufferCapacity = 256, onBufferOverflow = BufferOverflow.DROP_OLDEST)
 
     /** Global position, relative altitude, heading and velocity (GLOBAL_POSITION_INT). */
-    public val position: StateFlow<Position?> = _position.asStateFlow()
+    public val position: StateFlow<Position?> = _position
 
     /** Home location (HOME_POSITION). */
     public val home: StateFlow<Location?> = _home.asStateFlow()
 
     /** Roll, pitch and yaw (ATTITUDE). */
-    public val attitude: StateFlow<Attitude?> = _attitude.asStateFlow()
+    public val attitude: StateFlow<Attitude?> = _attitude
 
     /** Remaining charge and voltage (SYS_STATUS). */
-    public val battery: StateFlow<Battery?> = _battery.asStateFlow()
+    public val battery: StateFlow<Battery?> = _battery
+
+    /** Airspeed, groundspeed, climb rate, heading and throttle (VFR_HUD). */
+    public val hud: StateFlow<Hud?> = _hud
 
     /** Flight mode, named for the vehicle's autopilot and airframe (HEARTBEAT). */
     public val mode: StateFlow<FlightMode?> = _mode.asStateFlow()
@@ -82,7 +88,7 @@ public class VehicleTelemetry internal constructor() {
     public val systemStatus: StateFlow<Int> = _systemStatus.asStateFlow()
 
     /** Frames received and lost, from the vehicle's sequence numbers. */
-    public val linkQuality: StateFlow<LinkQuality> = _linkQuality.asStateFlow()
+    public val linkQuality: StateFlow<LinkQuality> = _linkQuality
 
     /** The mission item the vehicle is flying or will fly next (MISSION_CURRENT). */
     public val missionCurrent: StateFlow<Int?> = _missionCurrent.asStateFlow()
@@ -115,43 +121,77 @@ public class VehicleTelemetry internal constructor() {
      */
     public val cameraFeedback: SharedFlow<CapturedImage> = _cameraFeedback.asSharedFlow()
 
-    internal fun onHeartbeat(identity: VehicleIdentity, heartbeat: Heartbeat) {
-        _mode.value = FlightModes.decode(identity.autopilot, identity.type, heartbeat.customMode())
-        _armed.value = heartbeat.baseMode().value() and MAV_MODE_FLAG_SAFETY_ARMED != 0
-        _systemStatus.value = heartbeat.systemStatus().value()
+    // What the modes below were decoded for: a heartbeat that repeats them decodes nothing, and a
+    // mode seen before (GUIDED, then AUTO, then GUIDED again) is the object made the first time.
+    private var modeAutopilot: Autopilot? = null
+    private var modeType: VehicleType? = null
+    private val seenModes = arrayOfNulls<FlightMode>(8)
+    private var nextSeen = 0
+
+    /** The mode [customMode] names for [identity], reusing one of the last [seenModes] when it is one. */
+    private fun modeOf(identity: VehicleIdentity, customMode: Long): FlightMode {
+        if (modeAutopilot !== identity.autopilot || modeType !== identity.type) {
+            seenModes.fill(null)
+            modeAutopilot = identity.autopilot
+            modeType = identity.type
+        }
+        for (seen in seenModes) if (seen != null && seen.customMode == customMode) return seen
+        val mode = FlightModes.decode(identity.autopilot, identity.type, customMode)
+        seenModes[nextSeen] = mode
+        nextSeen = (nextSeen + 1) % seenModes.size
+        return mode
+    }
+
+    /**
+     * Applies one HEARTBEAT of the vehicle's own component: custom_mode, base_mode and
+     * system_status as on the wire. Allocates only for a mode not among the last few seen.
+     */
+    internal fun onHeartbeat(identity: VehicleIdentity, customMode: Long, baseMode: Int, systemStatus: Int) {
+        val mode = _mode.value
+        if (mode == null || mode.customMode != customMode || modeAutopilot !== identity.autopilot || modeType !== identity.type) {
+            _mode.value = modeOf(identity, customMode)
+        }
+        _armed.value = baseMode and MAV_MODE_FLAG_SAFETY_ARMED != 0
+        if (_systemStatus.value != systemStatus) _systemStatus.value = systemStatus
+    }
+
+    /** Applies GLOBAL_POSITION_INT's fields (see [PositionFlow.update]); false when the position is impossible. */
+    internal fun onGlobalPosition(lat: Int, lon: Int, alt: Int, relativeAlt: Int, vx: Int, vy: Int, vz: Int, hdg: Int): Boolean =
+        _position.update(lat, lon, alt, relativeAlt, vx, vy, vz, hdg)
+
+    /** Applies ATTITUDE's roll, pitch and yaw, in radians. */
+    internal fun onAttitude(roll: Float, pitch: Float, yaw: Float) {
+        _attitude.update(roll, pitch, yaw)
+    }
+
+    /** Applies SYS_STATUS's battery_remaining (%) and voltage_battery (mV). */
+    internal fun onSysStatus(batteryRemaining: Int, voltageBattery: Int) {
+        _battery.update(batteryRemaining, voltageBattery)
+    }
+
+    /** Applies VFR_HUD's fields as on the wire. */
+    internal fun onHud(airspeed: Float, groundspeed: Float, alt: Float, climb: Float, heading: Int, throttle: Int) {
+        _hud.update(airspeed, groundspeed, alt, climb, heading, throttle)
     }
 
     /** Applies one decoded message; returns false when it carried nothing usable (out-of-range values). */
     internal fun onMessage(message: Any): Boolean {
         when (message) {
-            is GlobalPositionInt -> {
-                val lat = message.lat() / 1e7
-                val lon = message.lon() / 1e7
-                if (lat !in -90.0..90.0 || lon !in -180.0..180.0) return false
-                _position.value = Position(
-                    location = Location(lat, lon, (message.alt() / 1000.0).m),
-                    relativeAltitude = (message.relativeAlt() / 1000.0).m,
-                    heading = if (message.hdg() == UNKNOWN_U16) null else (message.hdg() / 100.0).deg,
-                    velocityNorth = (message.vx() / 100.0).mps,
-                    velocityEast = (message.vy() / 100.0).mps,
-                    velocityDown = (message.vz() / 100.0).mps,
-                )
-            }
-            is SysStatus -> _battery.value = Battery(
-                remaining = message.batteryRemaining().takeIf { it in 0..100 }?.let { it / 100.0 },
-                voltage = message.voltageBattery().takeIf { it != UNKNOWN_U16 }?.let { it / 1000.0 },
+            // The five hot messages usually arrive as fields read in place (MavlinkVehicle.onHotFrame);
+            // as objects (an exchange listening, a signed link) they take the same setters.
+            is GlobalPositionInt -> return onGlobalPosition(
+                message.lat(), message.lon(), message.alt(), message.relativeAlt(),
+                message.vx(), message.vy(), message.vz(), message.hdg(),
             )
+            is SysStatus -> onSysStatus(message.batteryRemaining(), message.voltageBattery())
+            is VfrHud -> onHud(message.airspeed(), message.groundspeed(), message.alt(), message.climb(), message.heading(), message.throttle())
             is HomePosition -> {
                 val lat = message.latitude() / 1e7
                 val lon = message.longitude() / 1e7
                 if (lat !in -90.0..90.0 || lon !in -180.0..180.0) return false
                 _home.value = Location(lat, lon, (message.altitude() / 1000.0).m)
             }
-            is AttitudeMessage -> _attitude.value = Attitude(
-                roll = Math.toDegrees(message.roll().toDouble()).deg,
-                pitch = Math.toDegrees(message.pitch().toDouble()).deg,
-                yaw = Math.toDegrees(message.yaw().toDouble()).deg,
-            )
+            is AttitudeMessage -> onAttitude(message.roll(), message.pitch(), message.yaw())
             is ExtendedSysState -> _landedState.value =
                 LandedState.entries.getOrElse(message.landedState().value()) { LandedState.UNDEFINED }
             is MissionCurrent -> _missionCurrent.value = message.seq()
@@ -188,8 +228,8 @@ public class VehicleTelemetry internal constructor() {
         return true
     }
 
-    internal fun onLinkQuality(quality: LinkQuality) {
-        _linkQuality.value = quality
+    internal fun onLinkQuality(received: Long, lost: Long) {
+        _linkQuality.update(received, lost)
     }
 
     private companion object {
