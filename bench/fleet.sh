@@ -6,6 +6,7 @@
 #   bench/fleet.sh                  10 minutes measured after 30 s of warm-up (the BENCHMARKS.md figure)
 #   bench/fleet.sh --quick          a 1-minute smoke run (figures not meaningful)
 #   bench/fleet.sh --duration 3m    any other option goes to pod.bench.fleet.FleetBenchKt
+#   bench/fleet.sh --vehicles 1000 --links 4 --senders 4   1,000 vehicles on 4 stations (one udpin link each) in one JVM
 . "$(dirname "${BASH_SOURCE[0]}")/preamble.sh"
 
 if $quick; then

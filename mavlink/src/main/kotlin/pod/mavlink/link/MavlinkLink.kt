@@ -19,9 +19,9 @@ public interface MavlinkLink {
     /**
      * Receives until the link is closed or the caller is cancelled, calling [onBytes] for every
      * datagram (UDP) or chunk (TCP, serial), one call at a time, in the order they arrived. A UDP link
-     * calls it on a receive thread of its own (no hand-off per datagram), other links on the
-     * caller's dispatcher: [onBytes] must not block and must publish what it changes safely for
-     * other threads. Throws [LinkException] if the link breaks (a TCP server hanging up); returns
+     * calls it on a receive thread that it shares with other UDP links of the process (no hand-off
+     * per datagram), other links on the caller's dispatcher: [onBytes] must not block (it would
+     * hold up the links beside it) and must publish what it changes safely for other threads. Throws [LinkException] if the link breaks (a TCP server hanging up); returns
      * normally when [close] was called.
      */
     public suspend fun receive(onBytes: (peer: LinkPeer, bytes: ByteArray) -> Unit)

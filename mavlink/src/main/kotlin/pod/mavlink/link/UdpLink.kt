@@ -2,31 +2,31 @@ package pod.mavlink.link
 
 import io.ktor.network.sockets.InetSocketAddress
 import io.ktor.network.sockets.toJavaAddress
-import kotlinx.coroutines.CompletableDeferred
-import kotlinx.coroutines.asCoroutineDispatcher
-import kotlinx.coroutines.runInterruptible
+import kotlinx.coroutines.CancellationException
+import kotlinx.coroutines.NonCancellable
+import kotlinx.coroutines.withContext
 import java.io.IOException
 import java.net.BindException
-import java.net.PortUnreachableException
 import java.net.SocketAddress
 import java.net.StandardSocketOptions
 import java.nio.ByteBuffer
-import java.nio.channels.ClosedChannelException
 import java.nio.channels.DatagramChannel
 import java.util.concurrent.ConcurrentHashMap
-import java.util.concurrent.Executors
 
 /**
  * UDP over a java.nio [DatagramChannel]. Listening ([LinkAddress.UdpIn]) it learns a peer from
  * every datagram, so one port serves many vehicles; sending ([LinkAddress.UdpOut]) it binds an
  * ephemeral port and talks to one remote, as SITL's `--out` and pymavlink's `udpout` do.
  *
- * [receive] runs on a thread of the link's own, started for the call and ended with it: it blocks
- * in `receive(2)` and calls `onBytes` in place, so a datagram is read, decoded, routed and applied
- * to telemetry on one thread, with no hand-off. Ktor 3.6.1's datagram socket cannot do that: its
- * receiver is a `produce(Dispatchers.IO)` coroutine feeding a channel whatever selector it is
- * given, and its `send` takes a mutex and hops to Dispatchers.IO (BENCHMARKS.md, issue 13).
- * [send] writes from the caller's thread: a UDP `sendto` does not wait for the peer.
+ * [receive] registers the channel with one of the process's UDP receive loops ([UdpReceiveLoop]:
+ * one selector thread each, one per core at most), which reads it and calls `onBytes` in place, so
+ * a datagram is read, decoded, routed and applied to telemetry on one thread, with no hand-off, and
+ * hundreds of links in one process (a simulated fleet, `pod route`) share a few threads. Ktor
+ * 3.6.1's datagram socket cannot do that: its receiver is a `produce(Dispatchers.IO)` coroutine
+ * feeding a channel whatever selector it is given, and its `send` takes a mutex and hops to
+ * Dispatchers.IO (BENCHMARKS.md, issue 13). [send] writes from the caller's thread: a UDP `sendto`
+ * does not wait for the peer (the channel is non-blocking, as a selector needs: a datagram that
+ * finds the socket's send buffer full is dropped, as a full router queue would drop it).
  */
 internal class UdpLink private constructor(
     override val address: LinkAddress,
@@ -36,8 +36,9 @@ internal class UdpLink private constructor(
 ) : MavlinkLink {
     // Peer → its java address, for send; when listening, also the set [peers] reports.
     private val heard = ConcurrentHashMap<LinkPeer, SocketAddress>()
-    private val receiveEnded = CompletableDeferred<Unit>()
-    @Volatile private var receiveStarted = false
+    private val lock = Any()
+    @Volatile private var receiver: UdpReceiver? = null
+    private var loop: UdpReceiveLoop? = null // guarded by lock
 
     override val localPort: Int = (channel.localAddress as java.net.InetSocketAddress).port
 
@@ -45,44 +46,23 @@ internal class UdpLink private constructor(
         get() = if (remote != null) listOf(remote) else heard.keys.toList()
 
     override suspend fun receive(onBytes: (peer: LinkPeer, bytes: ByteArray) -> Unit) {
-        receiveStarted = true
-        val thread = Executors.newSingleThreadExecutor { task ->
-            Thread(task, "pod-udp-receive-$localPort").apply { isDaemon = true }
+        val receiver = UdpReceiver(channel, address.hostAndPort, onBytes) { from, peer -> if (remote == null) heard[peer] = from }
+        // Under the lock with close(), so that a loop is told of a closing only after it was given the receiver.
+        synchronized(lock) {
+            if (!channel.isOpen) return
+            val loop = Selectors.udp.pick()
+            this.loop = loop
+            this.receiver = receiver
+            loop.add(receiver)
         }
         try {
-            // Cancelling the caller interrupts the thread, which closes the channel (NIO's rule for
-            // an interrupted blocking read): a station whose scope is cancelled releases its port.
-            runInterruptible(thread.asCoroutineDispatcher()) { receiveLoop(onBytes) }
-        } finally {
-            thread.shutdown()
-            receiveEnded.complete(Unit)
-        }
-    }
-
-    private fun receiveLoop(onBytes: (peer: LinkPeer, bytes: ByteArray) -> Unit) {
-        // Interning peers keeps one object per address, so callers can key state by peer cheaply;
-        // this map is the receive thread's alone.
-        val interned = HashMap<SocketAddress, LinkPeer>()
-        val buffer = ByteBuffer.allocateDirect(MAX_DATAGRAM)
-        while (true) {
-            buffer.clear()
-            val from = try {
-                channel.receive(buffer) ?: continue
-            } catch (_: ClosedChannelException) {
-                return // close() was called, or the caller was cancelled
-            } catch (_: PortUnreachableException) {
-                continue // an ICMP error for an earlier send: that datagram was lost, nothing more
-            } catch (e: IOException) {
-                if (!channel.isOpen) return
-                throw LinkException("udp link on ${address.hostAndPort} broke: ${e.message}", e)
-            }
-            buffer.flip()
-            val bytes = ByteArray(buffer.remaining())
-            buffer.get(bytes)
-            val peer = interned.getOrPut(from) {
-                LinkPeer(from.asKtorAddress()).also { if (remote == null) heard[it] = from }
-            }
-            onBytes(peer, bytes)
+            receiver.ended.await()
+        } catch (e: CancellationException) {
+            // A cancelled receiver closes its link, as a blocking read interrupted does in NIO: a
+            // station whose scope is cancelled releases its port. Returns once the loop let go.
+            close()
+            withContext(NonCancellable) { receiver.ended.join() }
+            throw e
         }
     }
 
@@ -101,22 +81,22 @@ internal class UdpLink private constructor(
     }
 
     override fun close() {
-        // Returns once a receive blocked on the channel has left it and the socket is released.
-        channel.close()
+        // A registered channel's socket is released when the loop drops its registration: see awaitClosed.
+        synchronized(lock) {
+            channel.close()
+            receiver?.let { loop?.remove(it) }
+        }
     }
 
     override suspend fun awaitClosed() {
-        // close() released the socket already (the channel is registered with no selector); what is
-        // left is the receive thread's way out, so that a closed link holds no thread either.
-        if (!channel.isOpen && receiveStarted) receiveEnded.await()
+        // The receive loop completes `ended` once the selector dropped the channel, which is when
+        // NIO closes a registered channel's socket; a link never received on was released by close().
+        if (!channel.isOpen) receiver?.ended?.join()
     }
 
     companion object {
         /** Big enough for a burst from dozens of vehicles; Linux caps it at net.core.rmem_max. */
         const val RECEIVE_BUFFER_BYTES = 4 shl 20
-
-        /** The largest UDP payload; MAVLink frames are at most 280 bytes, but a datagram may carry several. */
-        private const val MAX_DATAGRAM = 65_507
 
         fun open(address: LinkAddress): UdpLink {
             val remoteAddress = if (address is LinkAddress.UdpOut) {
@@ -133,6 +113,7 @@ internal class UdpLink private constructor(
                 channel.setOption(StandardSocketOptions.SO_RCVBUF, RECEIVE_BUFFER_BYTES)
                 channel.setOption(StandardSocketOptions.SO_SNDBUF, 1 shl 20)
                 channel.bind(local)
+                channel.configureBlocking(false)
             } catch (e: BindException) {
                 channel.close()
                 if (e.message.orEmpty().contains("in use", ignoreCase = true)) throw PortInUse(address, e)
@@ -144,10 +125,4 @@ internal class UdpLink private constructor(
             return UdpLink(address, channel, remote, remoteAddress)
         }
     }
-}
-
-// Peers carry Ktor addresses, as every link's peers do (LinkPeer.address); made once per new sender.
-private fun SocketAddress.asKtorAddress(): InetSocketAddress {
-    val inet = this as java.net.InetSocketAddress
-    return InetSocketAddress(inet.address.address, inet.port)
 }

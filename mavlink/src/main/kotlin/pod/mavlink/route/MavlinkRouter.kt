@@ -30,7 +30,7 @@ import kotlin.time.Duration.Companion.seconds
  * are in [RouteTable]; an endpoint is a peer of a listening link or a whole other link
  * ([RoutePort]). Targets are read from the payload's bytes ([FrameTargets]), nothing is decoded.
  *
- * Frames are routed on the receive path of the link they arrived on (a UDP link's own thread) and
+ * Frames are routed on the receive path of the link they arrived on (a UDP receive thread the link shares with others) and
  * sent from there when the destination sends in place (UDP); a TCP destination gets a bounded
  * queue. Memory is bounded by [RouterConfig]. All coroutines are children of the scope it was
  * started in; [close] stops them and closes the links it was given.
