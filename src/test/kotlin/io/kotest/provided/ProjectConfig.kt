@@ -18,7 +18,7 @@ import io.kotest.engine.concurrency.SpecExecutionMode
 class ProjectConfig : AbstractProjectConfig() {
     override val specExecutionMode: SpecExecutionMode =
         SpecExecutionMode.LimitedConcurrency(System.getProperty("pod.e2e.concurrentSpecs")?.toIntOrNull() ?: CONCURRENT_SPECS)
-    override val extensions: List<Extension> = listOf(SpecTimes, LongSpecsFirst)
+    override val extensions: List<Extension> = listOf(SpecTimes)
 
     private companion object {
         const val CONCURRENT_SPECS = 2
