@@ -7,19 +7,16 @@ import io.kotest.matchers.collections.shouldHaveSize
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldNotContain
 import kotlinx.coroutines.Dispatchers
-import kotlinx.coroutines.async
-import kotlinx.coroutines.awaitAll
-import kotlinx.coroutines.coroutineScope
-import kotlinx.coroutines.sync.Semaphore
-import kotlinx.coroutines.sync.withPermit
+import kotlinx.coroutines.runInterruptible
 import java.io.File
 import java.nio.file.Files
-import java.util.concurrent.TimeUnit
+import java.util.concurrent.CompletableFuture
 
 /**
  * The documentation's Kotlin as a reader copies it: every ```kotlin block of README.md and
  * the Markdown files in docs/ compiles under `pod run` (fragments inside the context their `<!-- fragment` comment
  * gives), and the README's "Programs" example flies to completion on simulated drones.
+ * The compiles share one JVM and the flights another ([PodBatch]), the two side by side.
  */
 class ReadmeSpec : StringSpec({
     val work = Files.createTempDirectory("pod-readme").toFile()
@@ -28,21 +25,38 @@ class ReadmeSpec : StringSpec({
     val docs = listOf(File("../README.md")) + File("../docs").listFiles { f -> f.name.endsWith(".md") }!!.sorted()
     val blocks = docs.flatMap { MarkdownKotlin.blocks(it, if (it.parentFile.name == "docs") "docs/${it.name}" else it.name) }
 
-    /** `pod run` of [block] as a script file, in a JVM of its own (as ScriptRunSpec starts it). */
-    fun run(block: KotlinBlock, vararg options: String): PodRun {
+    /** The arguments of `pod run` of [block] as a script file. */
+    fun runArgs(block: KotlinBlock, vararg options: String): List<String> {
         val script = File(work, "${block.file.replace('/', '-').removeSuffix(".md")}-${block.line}.main.kts")
         script.writeText(block.script)
-        return PodRun.start(listOf("run", script.path) + options, cache = File(work, "cache"))
+        return listOf("run", script.path) + options
     }
 
+    val programs = blocks.filter { it.file == "README.md" && it.code.any { line -> line.startsWith("pod {") } }
+
+    // The README's three programs fly one after another in one JVM (a PodBatch), beside the JVM that
+    // compiles the other blocks: one JVM and one warm compiler for each group, not one per block.
+    val flights: Lazy<CompletableFuture<Map<KotlinBlock, PodRun>>> = lazy {
+        val runs = listOf(
+            programs.single { block -> block.code.none { it.contains("missionQueue") || it.contains("surveyWorkflow") } } to listOf("--sim", "2", "--time-scale", "100"),
+            programs.single { block -> block.code.any { it.contains("surveyWorkflow(") } } to listOf("--sim", "1", "--time-scale", "50"),
+            programs.single { block -> block.code.any { it.contains("missionQueue") } } to listOf("--sim", "1", "--time-scale", "50"),
+        )
+        val args = runs.map { (block, options) -> runArgs(block, *options.toTypedArray()) }
+        CompletableFuture.supplyAsync { runs.map { it.first }.zip(PodBatch.run(args, File(work, "cache"))).toMap() }
+    }
+
+    /** What `pod run` of the README program [block] printed (the flights run once, for all the tests). */
+    fun flown(block: KotlinBlock): PodRun = flights.value.get().getValue(block)
+
     "every ```kotlin block of the README and docs/ compiles against Pod (fragments in their stated context)" {
+        programs shouldHaveSize 3
+        flights.value // starts the flights beside the compiles
         val compiled = blocks.filter { it.skipped == null && it.code.none { line -> line.startsWith("pod {") } }
         (compiled.size >= 6) shouldBe true // the README's missions, flying, fleet choice, two app blocks; docs' mission
         // Blocks that are not programs only declare things or print: running them is compiling them.
-        val failed = coroutineScope {
-            val cores = Semaphore(2)
-            compiled.map { block -> async(Dispatchers.IO) { cores.withPermit { block to run(block) } } }.awaitAll()
-        }.filter { (_, run) -> run.exitCode != 0 }
+        val runs = runInterruptible(Dispatchers.IO) { PodBatch.run(compiled.map { runArgs(it) }, File(work, "cache")) }
+        val failed = compiled.zip(runs).filter { (_, run) -> run.exitCode != 0 }
             .map { (block, run) -> "${block.where} does not compile:\n${run.err}\n${block.numbered}" }
         withClue(failed.joinToString("\n\n")) { failed.shouldBeEmpty() }
     }
@@ -53,9 +67,8 @@ class ReadmeSpec : StringSpec({
     }
 
     "the README's Programs example flies to completion on two simulated drones under pod run" {
-        val programs = blocks.filter { it.file == "README.md" && it.code.any { line -> line.startsWith("pod {") } }
         programs shouldHaveSize 3
-        val run = run(programs.single { block -> block.code.none { it.contains("missionQueue") || it.contains("surveyWorkflow") } }, "--sim", "2", "--time-scale", "100")
+        val run = runInterruptible(Dispatchers.IO) { flown(programs.single { block -> block.code.none { it.contains("missionQueue") || it.contains("surveyWorkflow") } }) }
         withClue({ run.err + run.out.joinToString("\n") }) {
             run.exitCode shouldBe 0
             run.err shouldNotContain "Exception"
@@ -67,7 +80,7 @@ class ReadmeSpec : StringSpec({
 
     "the README's survey-workflow example flies both passes and lands, on one simulated drone under pod run" {
         val survey = blocks.single { it.file == "README.md" && it.code.any { line -> line.contains("surveyWorkflow(") } }
-        val run = run(survey, "--sim", "1", "--time-scale", "50")
+        val run = runInterruptible(Dispatchers.IO) { flown(survey) }
         withClue({ run.err + run.out.joinToString("\n") }) {
             run.exitCode shouldBe 0
             run.err shouldNotContain "Exception"
@@ -78,7 +91,7 @@ class ReadmeSpec : StringSpec({
 
     "the README's mission-queue example flies its queue to the end and lands, on one simulated drone under pod run" {
         val queue = blocks.single { it.file == "README.md" && it.code.any { line -> line.contains("missionQueue") } }
-        val run = run(queue, "--sim", "1", "--time-scale", "50")
+        val run = runInterruptible(Dispatchers.IO) { flown(queue) }
         withClue({ run.err + run.out.joinToString("\n") }) {
             run.exitCode shouldBe 0
             run.err shouldNotContain "Exception"
@@ -87,30 +100,3 @@ class ReadmeSpec : StringSpec({
         }
     }
 })
-
-/** What `pod` printed and how it exited. */
-internal class PodRun(val exitCode: Int, val out: List<String>, val err: String) {
-    companion object {
-        /**
-         * Runs `pod` with [args] in a JVM of its own (`pod.cli.MainKt` on this test's classpath, as
-         * the `./pod` launcher starts it), scripts cached in [cache].
-         */
-        fun start(args: List<String>, cache: File): PodRun {
-            val dir = Files.createTempDirectory("pod-run").toFile()
-            try {
-                val java = File(System.getProperty("java.home"), "bin/java").path
-                val process = ProcessBuilder(
-                    listOf(java, "-XX:+UseSerialGC", "-XX:TieredStopAtLevel=1", "-cp", System.getProperty("java.class.path"), "pod.cli.MainKt") + args,
-                ).redirectOutput(File(dir, "out")).redirectError(File(dir, "err")).redirectInput(ProcessBuilder.Redirect.PIPE)
-                    .also { it.environment()["POD_SCRIPT_CACHE"] = cache.path }
-                    .start()
-                process.outputStream.close()
-                // A bound against a hung child, not a timing assertion.
-                check(process.waitFor(5, TimeUnit.MINUTES)) { process.destroyForcibly(); "pod did not finish" }
-                return PodRun(process.exitValue(), File(dir, "out").readLines(), File(dir, "err").readText())
-            } finally {
-                dir.deleteRecursively()
-            }
-        }
-    }
-}

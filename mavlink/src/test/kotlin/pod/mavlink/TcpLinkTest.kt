@@ -49,8 +49,19 @@ class TcpLinkTest : StringSpec({
                             client.getOutputStream().flush()
                             at += n
                         }
-                        // Keep the connection open until the station has seen the position.
-                        client.getInputStream().read(ByteArray(64))
+                        // A bound against a station that never hangs up, not a timing assertion.
+                        client.soTimeout = 60_000
+                        // Keep the connection open until the station has spoken (its heartbeat), then
+                        // hang up cleanly: half-close (FIN, which the station reads after the frames
+                        // above) and read what it still sends until it closes its side. Closing with
+                        // bytes unread makes the kernel reset the connection instead (RST, RFC 2525
+                        // 2.17), which the station rightly reports as "broke: Connection reset", not as
+                        // a hang-up: on a slow run the station's heartbeats and stream requests pile up
+                        // past one read while the frames go out, and the test then timed out (CI).
+                        val input = client.getInputStream()
+                        input.read()
+                        client.shutdownOutput()
+                        input.readAllBytes()
                     }
                 }
                 val gcs = GroundStation.open("tcp:127.0.0.1:${server.localPort}", this, GroundStationConfig(streamRequestInterval = 100.milliseconds, heartbeatInterval = 100.milliseconds))

@@ -1,6 +1,7 @@
 package io.kotest.provided
 
 import io.kotest.core.config.AbstractProjectConfig
+import io.kotest.core.extensions.Extension
 import io.kotest.engine.concurrency.SpecExecutionMode
 
 /**
@@ -11,10 +12,13 @@ import io.kotest.engine.concurrency.SpecExecutionMode
  * specs at a time keep both cores busy; four oversubscribed them and a Python peer's start-up then
  * missed its real-time bound (PymavlinkCommandSpec failed in two runs out of two at four, with the
  * e2e module 5.5 min; see the issue note). Every spec binds its own ports and owns its vehicles, so
- * they share no state; tests within a spec still run one after another.
+ * they share no state; tests within a spec still run one after another. `-Dpod.e2e.concurrentSpecs=N`
+ * on the Maven command line (Surefire hands it to the test JVM) tries another number without a change here.
  */
 class ProjectConfig : AbstractProjectConfig() {
-    override val specExecutionMode: SpecExecutionMode = SpecExecutionMode.LimitedConcurrency(CONCURRENT_SPECS)
+    override val specExecutionMode: SpecExecutionMode =
+        SpecExecutionMode.LimitedConcurrency(System.getProperty("pod.e2e.concurrentSpecs")?.toIntOrNull() ?: CONCURRENT_SPECS)
+    override val extensions: List<Extension> = listOf(SpecTimes)
 
     private companion object {
         const val CONCURRENT_SPECS = 2
