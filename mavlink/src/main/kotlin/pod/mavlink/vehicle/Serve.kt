@@ -4,7 +4,6 @@ import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Job
 import kotlinx.coroutines.NonCancellable
 import kotlinx.coroutines.delay
-import kotlinx.coroutines.isActive
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withContext
 import pod.mavlink.protocol.Step
@@ -73,39 +72,26 @@ public class Serving<in I, O> internal constructor(
     }
 
     /**
-     * Keeps one timer at the machine's wake time. A wake time that did not change, or moved later,
-     * keeps its timer, which on waking waits on to the time wanted then: a machine that moves its
-     * wake time on every message (an upload's re-request timer does, once per item) would otherwise
-     * cancel and launch a coroutine per message, and re-arming on every incoming message could
-     * cancel a timer in the middle of sending its messages, so a ground station that keeps talking
-     * would never hear them. Only a wake time earlier than the timer's starts a new one.
+     * Keeps one timer at the machine's wake time. A wake time that did not change keeps its timer:
+     * re-arming on every incoming message could cancel a timer in the middle of sending its
+     * messages, and a ground station that keeps talking would then never hear them.
      */
     private fun schedule() {
         val at = wanted
-        if (timer?.isActive == true && at >= timerAt) return
+        if (at == timerAt && timer?.isActive == true) return
         timer?.cancel()
         timerAt = at
         if (at == Step.NEVER) return
         timer = scope.launch {
-            while (true) {
-                delay((timerAt - now()).coerceAtLeast(0).nanoseconds)
-                val due = wanted
-                if (due == Step.NEVER) break
-                if (due > now()) {
-                    timerAt = due
-                    continue
-                }
-                val to = asker ?: break
-                withContext(NonCancellable) {
-                    val step = machine.onTimer(now())
-                    want(step.wakeAt)
-                    for (message in step.send) send(message, to)
-                }
-                if (!isActive) return@launch // replaced by an earlier timer while it sent: that one owns timerAt
-                if (wanted == Step.NEVER) break
-                timerAt = wanted
+            delay((at - now()).coerceAtLeast(0).nanoseconds)
+            val to = asker ?: return@launch
+            withContext(NonCancellable) {
+                val step = machine.onTimer(now())
+                want(step.wakeAt)
+                for (message in step.send) send(message, to)
             }
             timerAt = Step.NEVER
+            schedule()
         }
     }
 
