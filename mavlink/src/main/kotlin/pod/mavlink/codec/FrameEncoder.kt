@@ -17,6 +17,7 @@ public class FrameEncoder(private val codec: MessageCodec = MessageCodec.Default
      * id above 255.
      */
     public fun encode(message: Any, systemId: Int, componentId: Int, sequence: Int, version: Int = 2): ByteArray {
+        if (message is DirectPayload) return encodeDirect(message, systemId, componentId, sequence, version)
         val plan = codec.planOf(message.javaClass)
         val payload = plan.encode(message)
         val length = when (version) {
@@ -30,6 +31,23 @@ public class FrameEncoder(private val codec: MessageCodec = MessageCodec.Default
             else -> throw IllegalArgumentException("version must be 1 or 2, was $version")
         }
         return writeFrame(version, sequence, systemId, componentId, plan.id, payload, length, 0, 0, null, plan.crcExtra)
+    }
+
+    /** As [encode], for a message that writes its own payload; its CRC_EXTRA is the codec's for its id. */
+    private fun encodeDirect(message: DirectPayload, systemId: Int, componentId: Int, sequence: Int, version: Int): ByteArray {
+        val crcExtra = codec.crcExtra(message.messageId)
+        require(crcExtra >= 0) { "message id ${message.messageId} is not in the codec's dialect" }
+        val payload = ByteArray(message.length)
+        message.writePayload(payload)
+        val length = when (version) {
+            2 -> trimmedLength(payload)
+            1 -> {
+                require(message.messageId <= FrameLayout.MAX_V1_MESSAGE_ID) { "MAVLink 1 cannot carry message id ${message.messageId}, only 0..255" }
+                message.baseLength
+            }
+            else -> throw IllegalArgumentException("version must be 1 or 2, was $version")
+        }
+        return writeFrame(version, sequence, systemId, componentId, message.messageId, payload, length, 0, 0, null, crcExtra)
     }
 
     /**

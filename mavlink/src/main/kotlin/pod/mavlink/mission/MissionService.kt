@@ -11,7 +11,6 @@ import pod.core.units.toReadable
 import pod.core.vehicle.VehicleLost
 import pod.core.vehicle.VehicleType
 import pod.mavlink.MavlinkVehicle
-import pod.mavlink.MessageTargets
 import pod.mavlink.Wire
 import pod.mavlink.command.CommandRejected
 import pod.mavlink.command.CommandResult
@@ -234,14 +233,15 @@ public class MissionService internal constructor(
             during = "a ${type.name.lowercase()} transfer",
             pick = { inbound ->
                 val message = inbound.message
-                val target = message?.let { MessageTargets.targetSystem(it) }
-                when {
-                    message == null || inbound.frame.componentId != identity.componentId -> null
-                    target != null && target != 0 && target != ourSystem -> null // another ground station's exchange
-                    else -> MissionWire.decode(message)
+                if (message == null || inbound.frame.componentId != identity.componentId) {
+                    null
+                } else {
+                    val target = MissionWire.targetSystem(message)
+                    // Not ours when addressed to another ground station: that is its exchange.
+                    if (target != null && target != 0 && target != ourSystem) null else MissionWire.decode(message)
                 }
             },
-            encode = { MissionWire.encode(it, identity.systemId, identity.componentId) },
+            encode = { MissionWire.encodeToSend(it, identity.systemId, identity.componentId) },
             onCancel = if (cancellable) listOf(MissionMessage.Ack(type, MissionResult.OPERATION_CANCELLED)) else emptyList(),
         )
     }

@@ -57,6 +57,36 @@ internal object MissionWire {
     }
 
     /**
+     * What the ground side hands the link for [message]: MISSION_ITEM_INT written straight from the
+     * item ([MissionItemPayload], one per item of an upload), anything else as [encode] builds it.
+     */
+    fun encodeToSend(message: MissionMessage, targetSystem: Int, targetComponent: Int): Any =
+        if (message is MissionMessage.Item && !message.legacy) {
+            MissionItemPayload(message.item, targetSystem, targetComponent)
+        } else {
+            encode(message, targetSystem, targetComponent)
+        }
+
+    /**
+     * The target_system of a mission-protocol message, read without reflection (it is asked of every
+     * message heard during a transfer); null for other messages and for MISSION_CURRENT, which has none.
+     */
+    @Suppress("DEPRECATION")
+    fun targetSystem(message: Any): Int? = when (message) {
+        is MissionRequestInt -> message.targetSystem()
+        is MissionRequest -> message.targetSystem()
+        is MissionItemInt -> message.targetSystem()
+        is LegacyMissionItem -> message.targetSystem()
+        is MissionAck -> message.targetSystem()
+        is MissionCount -> message.targetSystem()
+        is MissionRequestList -> message.targetSystem()
+        is MissionClearAll -> message.targetSystem()
+        is MissionWritePartialList -> message.targetSystem()
+        is MissionSetCurrent -> message.targetSystem()
+        else -> null
+    }
+
+    /**
      * The [MissionMessage] that [message] carries, or null when it is not a mission-protocol
      * message or names a mission type or result this dialect does not define.
      */

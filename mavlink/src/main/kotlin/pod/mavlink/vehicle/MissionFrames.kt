@@ -1,6 +1,5 @@
 package pod.mavlink.vehicle
 
-import pod.mavlink.MessageTargets
 import pod.mavlink.mission.MissionMessage
 import pod.mavlink.mission.MissionWire
 
@@ -15,9 +14,9 @@ public object MissionFrames {
      * is addressed to [systemId] or to every system (target 0, or no target field); else null.
      */
     public fun read(message: Any, systemId: Int): MissionMessage? {
-        val target = MessageTargets.targetSystem(message)
-        val mission = MissionWire.decode(message)
-        return if (mission != null && (target == null || target == 0 || target == systemId)) mission else null
+        val mission = MissionWire.decode(message) ?: return null
+        val target = MissionWire.targetSystem(message)
+        return if (target == null || target == 0 || target == systemId) mission else null
     }
 
     /** [reply] as the io.dronefleet message to send, addressed to [to]. */

@@ -45,6 +45,25 @@ class ServeTest : StringSpec({
         }
     }
 
+    "a wake time moved later, message after message, wakes the machine once, at the last time asked" {
+        runTest {
+            val machine = Echo()
+            val serving = backgroundScope.serve(machine, testScheduler.timeSource.markNow()) { _, _ -> }
+            // As an upload moves the re-request timer with each item: 250 ms after each message.
+            for (k in 0 until 10) {
+                serving.receive(k * 100 * ms + 250 * ms, Asker(255, 190))
+                testScheduler.advanceTimeBy(100.milliseconds)
+            }
+            runCurrent()
+            machine.timers shouldBe emptyList()
+            testScheduler.advanceTimeBy(149.milliseconds)
+            runCurrent()
+            machine.timers shouldBe emptyList()
+            testScheduler.advanceTimeBy(2.milliseconds)
+            machine.timers shouldBe listOf(1150 * ms)
+        }
+    }
+
     "a changed wake time moves the timer, and NEVER stops it" {
         runTest {
             val machine = Echo()
