@@ -17,19 +17,24 @@ public class FrameEncoder(private val codec: MessageCodec = MessageCodec.Default
      * id above 255.
      */
     public fun encode(message: Any, systemId: Int, componentId: Int, sequence: Int, version: Int = 2): ByteArray {
+        if (message is EncodedPayload) {
+            val length = payloadLength(version, message.messageId, message.payload, message.baseLength) { "message id ${message.messageId}" }
+            return writeFrame(version, sequence, systemId, componentId, message.messageId, message.payload, length, 0, 0, null, message.crcExtra)
+        }
         val plan = codec.planOf(message.javaClass)
         val payload = plan.encode(message)
-        val length = when (version) {
-            2 -> trimmedLength(payload)
-            1 -> {
-                require(plan.id <= FrameLayout.MAX_V1_MESSAGE_ID) {
-                    "MAVLink 1 cannot carry message id ${plan.id} (${plan.messageClass.simpleName}), only 0..255"
-                }
-                plan.baseLength
-            }
-            else -> throw IllegalArgumentException("version must be 1 or 2, was $version")
-        }
+        val length = payloadLength(version, plan.id, payload, plan.baseLength) { "message id ${plan.id} (${plan.messageClass.simpleName})" }
         return writeFrame(version, sequence, systemId, componentId, plan.id, payload, length, 0, 0, null, plan.crcExtra)
+    }
+
+    /** How much of [payload] goes on the wire in [version]: trimmed in MAVLink 2, the base fields in MAVLink 1. */
+    private inline fun payloadLength(version: Int, id: Int, payload: ByteArray, baseLength: Int, what: () -> String): Int = when (version) {
+        2 -> trimmedLength(payload)
+        1 -> {
+            require(id <= FrameLayout.MAX_V1_MESSAGE_ID) { "MAVLink 1 cannot carry ${what()}, only 0..255" }
+            baseLength
+        }
+        else -> throw IllegalArgumentException("version must be 1 or 2, was $version")
     }
 
     /**

@@ -67,6 +67,18 @@ internal class CommandRoundTrip(
             return estimate.toLong().coerceIn(floor, timing.maxAttemptTimeout.inWholeNanoseconds)
         }
 
+    /**
+     * How long the caller may poll for an answer instead of suspending ([pod.mavlink.HotWait]): the
+     * smoothed round trip plus four deviations when a round trip was measured and that is within
+     * [pod.mavlink.HotWait.MAX_BUDGET_NANOS] (a quick link); 0 otherwise.
+     */
+    val hotWaitNanos: Long
+        get() {
+            if (smoothed < 0) return 0
+            val expected = (smoothed + 4 * deviation).toLong()
+            return if (expected <= pod.mavlink.HotWait.MAX_BUDGET_NANOS) expected else 0
+        }
+
     fun sample(nanos: Long) {
         val x = nanos.coerceAtLeast(0).toDouble()
         if (smoothed < 0) {
