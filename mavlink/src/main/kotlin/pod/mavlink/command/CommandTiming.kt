@@ -68,15 +68,17 @@ internal class CommandRoundTrip(
         }
 
     /**
-     * How long the caller may poll for an answer instead of suspending ([pod.mavlink.HotWait]): the
-     * smoothed round trip plus four deviations when a round trip was measured and that is within
-     * [pod.mavlink.HotWait.MAX_BUDGET_NANOS] (a quick link); 0 otherwise.
+     * How long the caller may poll for an answer instead of suspending ([pod.mavlink.HotWait]): on a
+     * quick link (a smoothed round trip within half of [pod.mavlink.HotWait.MAX_BUDGET_NANOS]) the
+     * smoothed round trip plus four deviations, at most that budget; 0 before any round trip was
+     * measured and on slower links. The deviation does not decide: one late answer on a busy
+     * machine would stop the polling for many commands.
      */
     val hotWaitNanos: Long
         get() {
-            if (smoothed < 0) return 0
-            val expected = (smoothed + 4 * deviation).toLong()
-            return if (expected <= pod.mavlink.HotWait.MAX_BUDGET_NANOS) expected else 0
+            val max = pod.mavlink.HotWait.MAX_BUDGET_NANOS
+            if (smoothed < 0 || smoothed > max / 2) return 0
+            return (smoothed + 4 * deviation).toLong().coerceAtMost(max)
         }
 
     fun sample(nanos: Long) {
