@@ -2,7 +2,6 @@ package pod.mavlink
 
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.NonCancellable
-import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeoutOrNull
 import pod.core.vehicle.StatusText
@@ -23,7 +22,9 @@ import kotlin.time.Duration.Companion.seconds
  * - [isAnswer]: whether a picked message answers the exchange (the awaiting notice clears), or only
  *   tells that the vehicle is alive;
  * - [texts]: which of the vehicle's joined status-text lines it also reads (null: none);
- * - [onCancel]: what to tell the vehicle when the caller cancels the exchange.
+ * - [onCancel]: what to tell the vehicle when the caller cancels the exchange;
+ * - [hotWaitNanos]: how long the caller polls for the next event before it suspends ([HotWait]),
+ *   read before each wait: about the round trip the exchange expects on a quick link, 0 for none.
  */
 internal class Wire<I, O>(
     val during: String,
@@ -33,6 +34,7 @@ internal class Wire<I, O>(
     val isAnswer: (I) -> Boolean = { true },
     val texts: ((StatusText) -> I?)? = null,
     val onCancel: List<O> = emptyList(),
+    val hotWaitNanos: () -> Long = { 0L },
 )
 
 /**
@@ -76,10 +78,11 @@ internal suspend fun <I, O, T> MavlinkVehicle.run(
                 }
             }
             val timer = exchange.wakeAt
+            if (HotWait.poll(exchange.wake, minOf(wire.hotWaitNanos(), timer - now()))) continue
             val woken = if (timer == Step.NEVER) {
-                exchange.wake.receive()
+                exchange.wake.await()
             } else {
-                withTimeoutOrNull((timer - now()).coerceAtLeast(0).nanoseconds) { exchange.wake.receive() }
+                withTimeoutOrNull((timer - now()).coerceAtLeast(0).nanoseconds) { exchange.wake.await() }
             }
             if (woken == null) exchange.timerExpired()
         }
@@ -116,7 +119,7 @@ private class InPlaceExchange<I, O, T>(
     private val afterStep: () -> Unit,
     private val now: () -> Long,
 ) {
-    val wake = Channel<Unit>(Channel.CONFLATED)
+    val wake = Doorbell()
     private val unsent = ArrayList<O>()
 
     @Volatile var wakeAt: Long = Step.NEVER
@@ -166,7 +169,7 @@ private class InPlaceExchange<I, O, T>(
             outcome = step.outcome
             ping = true
         }
-        if (ping) wake.trySend(Unit)
+        if (ping) wake.ring()
     }
 }
 

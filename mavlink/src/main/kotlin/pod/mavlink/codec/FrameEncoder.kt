@@ -20,16 +20,7 @@ public class FrameEncoder(private val codec: MessageCodec = MessageCodec.Default
         if (message is DirectPayload) return encodeDirect(message, systemId, componentId, sequence, version)
         val plan = codec.planOf(message.javaClass)
         val payload = plan.encode(message)
-        val length = when (version) {
-            2 -> trimmedLength(payload)
-            1 -> {
-                require(plan.id <= FrameLayout.MAX_V1_MESSAGE_ID) {
-                    "MAVLink 1 cannot carry message id ${plan.id} (${plan.messageClass.simpleName}), only 0..255"
-                }
-                plan.baseLength
-            }
-            else -> throw IllegalArgumentException("version must be 1 or 2, was $version")
-        }
+        val length = payloadLength(version, plan.id, payload, plan.baseLength) { "message id ${plan.id} (${plan.messageClass.simpleName})" }
         return writeFrame(version, sequence, systemId, componentId, plan.id, payload, length, 0, 0, null, plan.crcExtra)
     }
 

@@ -10,6 +10,7 @@ import kotlinx.coroutines.sync.withLock
 import pod.mavlink.MavlinkVehicle
 import pod.mavlink.Wire
 import pod.mavlink.run
+import kotlin.time.TimeSource
 
 /**
  * Sends commands to one vehicle and waits for their answers (COMMAND_LONG / COMMAND_INT and
@@ -56,6 +57,7 @@ public class CommandService internal constructor(
     private suspend fun exchange(command: VehicleCommand, inProgress: (Int?) -> Unit): CommandReply {
         val identity = vehicle.identity.value
         val ourSystem = vehicle.station.config.systemId
+        val realTime = vehicle.clock === TimeSource.Monotonic
         val machine = CommandTransaction(command, timing, vehicle.roundTrips.command, vehicle.lastHeartbeat.elapsedNow().inWholeNanoseconds)
         // Telemetry only tells that the vehicle is alive: forwarded at most every HEARD_EVERY.
         val heard = vehicle.clock.markNow()
@@ -67,7 +69,7 @@ public class CommandService internal constructor(
                 when {
                     inbound.frame.componentId != identity.componentId -> null
                     // Older autopilots leave the target empty (0); anything else must be us.
-                    message is CommandAck -> if (message.targetSystem() in setOf(0, ourSystem)) {
+                    message is CommandAck -> if (message.targetSystem().let { it == 0 || it == ourSystem }) {
                         CommandWire.reply(message)?.takeIf { it.command == command.command }?.let { CommandInput.Reply(it) }
                     } else {
                         null
@@ -83,11 +85,19 @@ public class CommandService internal constructor(
                     }
                 }
             },
-            encode = { confirmation -> CommandWire.encode(command, identity.systemId, identity.componentId, confirmation) },
+            encode = { confirmation ->
+                if (command.frame == null) {
+                    CommandWire.encodeLong(command, identity.systemId, identity.componentId, confirmation)
+                } else {
+                    CommandWire.encode(command, identity.systemId, identity.componentId, confirmation)
+                }
+            },
             giveUpAfter = timing.timeout,
             isAnswer = { it is CommandInput.Reply },
             // Texts come from the vehicle's joined STATUSTEXT lines (a long one arrives in chunks).
             texts = { line -> if (line.severity.ordinal <= MAV_SEVERITY_WARNING) CommandInput.Text(line.text) else null },
+            // Polled on the real clock only: in virtual time an answer needs the scheduler to move on.
+            hotWaitNanos = if (realTime) ({ vehicle.roundTrips.command.hotWaitNanos }) else ({ 0L }),
         )
         var reported = 0
         try {

@@ -67,6 +67,20 @@ internal class CommandRoundTrip(
             return estimate.toLong().coerceIn(floor, timing.maxAttemptTimeout.inWholeNanoseconds)
         }
 
+    /**
+     * How long the caller may poll for an answer instead of suspending ([pod.mavlink.HotWait]): on a
+     * quick link (a smoothed round trip within half of [pod.mavlink.HotWait.MAX_BUDGET_NANOS]) the
+     * smoothed round trip plus four deviations, at most that budget; 0 before any round trip was
+     * measured and on slower links. The deviation does not decide: one late answer on a busy
+     * machine would stop the polling for many commands.
+     */
+    val hotWaitNanos: Long
+        get() {
+            val max = pod.mavlink.HotWait.MAX_BUDGET_NANOS
+            if (smoothed < 0 || smoothed > max / 2) return 0
+            return (smoothed + 4 * deviation).toLong().coerceAtMost(max)
+        }
+
     fun sample(nanos: Long) {
         val x = nanos.coerceAtLeast(0).toDouble()
         if (smoothed < 0) {

@@ -1,6 +1,8 @@
 package pod.mavlink.command
 
 import pod.mavlink.MavFrames
+import pod.mavlink.codec.EncodedPayload
+import pod.mavlink.codec.writeLe
 
 import io.dronefleet.mavlink.common.CommandAck
 import io.dronefleet.mavlink.common.CommandInt
@@ -31,6 +33,30 @@ public object CommandWire {
             .z(command.param7)
             .build()
     }
+
+    /**
+     * [encode]'s COMMAND_LONG for a [command] without a frame, written field by field: the same
+     * bytes, without the io.dronefleet builder and the generic plan (see [EncodedPayload]). The
+     * layout is common.xml's COMMAND_LONG (id 76, CRC_EXTRA 152): param1 to param7 as floats,
+     * command as uint16, then target system, target component and confirmation as uint8.
+     */
+    internal fun encodeLong(command: VehicleCommand, targetSystem: Int, targetComponent: Int, confirmation: Int = 0): EncodedPayload {
+        require(command.frame == null) { "a command with a frame travels as COMMAND_INT" }
+        val payload = ByteArray(COMMAND_LONG_LENGTH)
+        val params = floatArrayOf(
+            command.param1, command.param2, command.param3, command.param4,
+            command.param5.toFloat(), command.param6.toFloat(), command.param7,
+        )
+        for (i in params.indices) payload.writeLe(i * 4, 4, params[i].toRawBits().toLong())
+        payload.writeLe(28, 2, command.command.toLong())
+        payload[30] = targetSystem.toByte()
+        payload[31] = targetComponent.toByte()
+        payload[32] = confirmation.toByte()
+        return EncodedPayload(COMMAND_LONG_ID, payload)
+    }
+
+    private const val COMMAND_LONG_ID = 76
+    private const val COMMAND_LONG_LENGTH = 33
 
     /** The command an incoming COMMAND_LONG or COMMAND_INT carries (the inverse of [encode]), or null. */
     public fun decode(message: Any): VehicleCommand? = when (message) {
