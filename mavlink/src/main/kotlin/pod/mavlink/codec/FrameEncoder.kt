@@ -30,15 +30,18 @@ public class FrameEncoder(private val codec: MessageCodec = MessageCodec.Default
         require(crcExtra >= 0) { "message id ${message.messageId} is not in the codec's dialect" }
         val payload = ByteArray(message.length)
         message.writePayload(payload)
-        val length = when (version) {
-            2 -> trimmedLength(payload)
-            1 -> {
-                require(message.messageId <= FrameLayout.MAX_V1_MESSAGE_ID) { "MAVLink 1 cannot carry message id ${message.messageId}, only 0..255" }
-                message.baseLength
-            }
-            else -> throw IllegalArgumentException("version must be 1 or 2, was $version")
-        }
+        val length = payloadLength(version, message.messageId, payload, message.baseLength) { "message id ${message.messageId}" }
         return writeFrame(version, sequence, systemId, componentId, message.messageId, payload, length, 0, 0, null, crcExtra)
+    }
+
+    /** How much of [payload] goes on the wire in [version]: trimmed in MAVLink 2, the base fields in MAVLink 1. */
+    private inline fun payloadLength(version: Int, id: Int, payload: ByteArray, baseLength: Int, what: () -> String): Int = when (version) {
+        2 -> trimmedLength(payload)
+        1 -> {
+            require(id <= FrameLayout.MAX_V1_MESSAGE_ID) { "MAVLink 1 cannot carry ${what()}, only 0..255" }
+            baseLength
+        }
+        else -> throw IllegalArgumentException("version must be 1 or 2, was $version")
     }
 
     /**
