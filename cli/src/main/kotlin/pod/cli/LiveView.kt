@@ -6,6 +6,7 @@ import com.github.ajalt.mordant.rendering.TextStyle
 import com.github.ajalt.mordant.rendering.Widget
 import com.github.ajalt.mordant.table.verticalLayout
 import com.github.ajalt.mordant.widgets.Text
+import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.onSubscription
@@ -39,11 +40,15 @@ internal class LiveView(
     private var rows: List<VehicleRow> = emptyList()
     private var radio: RadioStatus? = null
 
-    suspend fun show(gcs: GroundStation): Nothing = coroutineScope {
+    /** Shows [gcs] until cancelled; [subscribed] completes once its fleet events are watched (none is missed after). */
+    suspend fun show(gcs: GroundStation, subscribed: CompletableDeferred<Unit>? = null): Nothing = coroutineScope {
         val announced = HashSet<Int>()
         launch {
             // Vehicles found before we subscribed are announced once, right after subscribing.
-            gcs.events.onSubscription { gcs.vehicles.value.values.forEach { emit(FleetEvent.Found(it)) } }.collect { event ->
+            gcs.events.onSubscription {
+                gcs.vehicles.value.values.forEach { emit(FleetEvent.Found(it)) }
+                subscribed?.complete(Unit)
+            }.collect { event ->
                 if (event is FleetEvent.Found && !announced.add(event.vehicle.systemId)) return@collect
                 if (json) out.line(EventJson.encode(event.toEvent())) else note(FleetView.eventLine(event), FleetView.eventStyle(event))
             }

@@ -10,6 +10,7 @@ import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.options.validate
 import com.github.ajalt.clikt.parameters.types.path
+import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.NonCancellable
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.first
@@ -71,12 +72,16 @@ internal class ReplayCommand(private val out: Output) : CliktCommand(name = "rep
         val recording = gcs.record(tracks)
         val view = LiveView(out, json)
         if (json) out.line(EventJson.encode(Event.Replaying(file, speed.takeIf { it.isFinite() }))) else view.note("replaying $file " + if (speed.isFinite()) "at ${speed}x" else "as fast as it can")
-        // Played only now that the tracks are recorded: at a high speed the first frames come at once.
-        link.play()
         try {
             val playing: suspend () -> Unit = {
                 coroutineScope {
-                    val shown = launch { view.show(gcs) }
+                    val subscribed = CompletableDeferred<Unit>()
+                    val shown = launch { view.show(gcs, subscribed) }
+                    // Played only now that the tracks are recorded and the fleet's events watched: at a
+                    // high speed the whole log can play before a view launched beside it subscribes, and
+                    // a vehicle lost and regained in that time would show only as regained.
+                    subscribed.await()
+                    link.play()
                     link.progress.first { it.finished }
                     shown.cancel()
                 }
