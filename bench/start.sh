@@ -78,7 +78,12 @@ timed() {
 }
 
 echo "== $runs rounds (load average before: $(load))"
-"$python" bench/pymavlink_arm.py "$port" >/dev/null # the simulated copter is up and answers
+# The simulated copter is up and accepts arming: freshly booted, it refuses (MAV_RESULT_FAILED) until
+# its pre-arm checks pass, as ArduCopter does, so ask again, a bounded number of times.
+for attempt in $(seq 60); do
+  "$python" bench/pymavlink_arm.py "$port" >/dev/null 2>&1 && break
+  [ "$attempt" = 60 ] && { echo "the simulated copter did not accept arming in 60 attempts: $(tail -3 "$work/sim.log")" >&2; exit 1; }
+done
 for round in $(seq "$runs"); do
   for name in "${names[@]}"; do timed "$name"; done
 done
