@@ -17,6 +17,7 @@ import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.withContext
+import kotlinx.coroutines.yield
 import pod.cli.json.Event
 import pod.cli.json.EventJson
 import pod.launch.Interrupted
@@ -83,6 +84,11 @@ internal class ReplayCommand(private val out: Output) : CliktCommand(name = "rep
                     subscribed.await()
                     link.play()
                     link.progress.first { it.finished }
+                    // At --speed max the log can be played before this coroutine or the view's ever ran
+                    // (first returns at once): every fleet event was emitted before the log finished, so
+                    // the view's resumption is queued ahead of ours on this event loop; yielding lets it
+                    // print them before it is cancelled.
+                    yield()
                     shown.cancel()
                 }
             }
